@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Quick start: install what is missing, build, and run the main job on a bundled example.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/install-deps.sh"
+bash "$root/scripts/build.sh"
+"$root/build/bin/pqmesh" info "$root/data/3d/l_block.poly"
