@@ -1,0 +1,64 @@
+#include "commands.hpp"
+
+namespace pqmesh::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> list = {
+      {"info", "validate an input domain; print counts, shells, volume/area and alpha",
+       "usage: pqmesh info INPUT [--merge-angle DEG] [--no-merge]\n"
+       "\n"
+       "Reads a 2D domain (Triangle .poly) or a 3D domain (TetGen .poly/.smesh, OFF, STL ASCII or\n"
+       "binary, OBJ, Medit .mesh surface), validates it (thesis 1.4: closed, manifold, planar facets,\n"
+       "no self-intersection, connected) and prints its summary and alpha, the smallest interior angle\n"
+       "between faces (thesis ch. 3), with the faces that realise it.\n"
+       "\n"
+       "Triangle soups (STL, OFF, OBJ, Medit) are merged: adjacent exactly coplanar triangles become one\n"
+       "polygonal facet, so that only real features count as edges.\n"
+       "  --merge-angle DEG  also merge neighbours whose planes differ by at most DEG degrees\n"
+       "                     (made planar by projection; the count is reported)\n"
+       "  --no-merge         keep every input polygon as its own facet\n"
+       "\n"
+       "Exit 0 when the domain is valid, 2 with the offending ids and file line when it is not.\n",
+       run_info},
+      {"check", "check a mesh against its input domain (validity report)",
+       "usage: pqmesh check MESH --domain INPUT [--no-boundary-steiner] [--max-issues N]\n"
+       "\n"
+       "Runs the validity checker (docs/ALGORITHM.md, 'Validity checker'): element orientation,\n"
+       "face-to-face conformity, boundary faces, total volume/area equal to the domain's, every input\n"
+       "vertex present, every input edge and facet recovered as a union of mesh edges and boundary\n"
+       "triangles, no mesh vertex outside the domain. MESH may be .vtu, .msh (4.1 or 2.2), .mesh or\n"
+       ".node/.ele; its dimension is that of INPUT.\n"
+       "  --domain INPUT          the input domain the mesh claims to mesh (required)\n"
+       "  --no-boundary-steiner   also require that no mesh vertex lies on the input boundary other\n"
+       "                          than the input vertices (thesis ch. 5)\n"
+       "  --max-issues N          list at most N violations of each kind (default 20)\n"
+       "  --merge-angle DEG, --no-merge   as for 'pqmesh info', applied to INPUT\n"
+       "\n"
+       "Exit 0 only when the mesh is valid; 1 when it is not.\n",
+       run_check},
+      {"quality", "element quality report and histograms of a mesh",
+       "usage: pqmesh quality MESH [--dim 2|3] [--svg FILE]\n"
+       "\n"
+       "Prints per-mesh summaries of the measures of thesis ch. 3: aspect ratio (smallest enclosing\n"
+       "sphere radius / inscribed radius; regular tetrahedron 3, equilateral triangle 2), sphere ratio\n"
+       "(circumradius / inradius), radius-edge ratio, min/max dihedral angle (3D) or min/max angle\n"
+       "(2D), with the worst element's id, and histograms. Also checks the mesh's own topology\n"
+       "(orientation, conformity); use 'pqmesh check' to check it against a domain.\n"
+       "  --dim 2|3     force the mesh dimension (default: 3 if the file has tetrahedra, else 2)\n"
+       "  --svg FILE    write the histogram of the angle measure as an SVG bar chart\n",
+       run_quality},
+      {"convert", "convert a mesh between formats",
+       "usage: pqmesh convert IN OUT [--dim 2|3] [--msh22] [--ascii]\n"
+       "\n"
+       "Reads a mesh and writes it in the format given by OUT's extension: .vtu (VTK XML, cell data\n"
+       "'marker' and quality), .msh (Gmsh 4.1; --msh22 for 2.2), .mesh (Medit), .node (writes\n"
+       ".node/.ele/.face in 3D, .node/.ele/.poly in 2D), .svg (2D picture coloured by min angle).\n"
+       "  --dim 2|3   force the mesh dimension (default: 3 if IN has tetrahedra, else 2)\n"
+       "  --msh22     write Gmsh 2.2 instead of 4.1\n"
+       "  --ascii     text instead of binary where the format has both (.vtu)\n",
+       run_convert},
+  };
+  return list;
+}
+
+}  // namespace pqmesh::cli

@@ -1,0 +1,513 @@
+// VTK XML UnstructuredGrid (.vtu), version 1.0, little endian, UInt64 block
+// headers. Only the elements are written (VTK type 5 triangle, 10 tetra), as
+// one cell block; boundary edges/faces are not part of a .vtu. Arrays:
+//   PointData "vertex_marker" (Int32, when present)
+//   CellData  "marker" (Int32, when present), then every CellField (Float64)
+//   Points (Float64 x3, z = 0 in 2D); Cells connectivity/offsets (Int64),
+//   types (UInt8).
+// binary = true: every array is appended raw after "_" in <AppendedData>,
+// each preceded by its byte count as UInt64; false: inline ASCII.
+// VTK's tetrahedron has positive volume for pqmesh's orientation (its
+// reference tetrahedron is (0,0,0), (1,0,0), (0,1,0), (0,0,1)).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/mesh_common.hpp"
+#include "io/mesh_input.hpp"
+#include "io/mesh_output.hpp"
+
+namespace pqmesh::detail {
+
+namespace {
+
+enum class Scalar { Int32, Int64, UInt8, Float64 };
+
+const char* vtk_name(Scalar s) {
+  switch (s) {
+    case Scalar::Int32: return "Int32";
+    case Scalar::Int64: return "Int64";
+    case Scalar::UInt8: return "UInt8";
+    case Scalar::Float64: return "Float64";
+  }
+  return "";
+}
+
+std::size_t scalar_size(Scalar s) {
+  switch (s) {
+    case Scalar::Int32: return 4;
+    case Scalar::Int64: return 8;
+    case Scalar::UInt8: return 1;
+    case Scalar::Float64: return 8;
+  }
+  return 0;
+}
+
+// One array to write: `count` values produced by value(i).
+struct ArraySpec {
+  std::string name;
+  Scalar scalar;
+  int components;
+  std::size_t count;  // number of scalars (tuples * components)
+};
+
+template <class M>
+void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options) {
+  using T = MeshTraits<M>;
+  constexpr int D = T::dim;
+  constexpr int N = T::cell_nodes;
+  const auto& cells = T::cells(mesh);
+  const auto& markers = T::cell_markers(mesh);
+  const std::size_t nv = mesh.vertices.size(), nc = cells.size();
+  const bool binary = options.binary;
+
+  // Value of scalar i of each array, in the order they are written.
+  auto put_value = [&](int array, std::size_t i, bool raw) {
+    auto emit_int = [&](std::int64_t v, Scalar s) {
+      if (!raw) {
+        out.put_int(v);
+      } else if (s == Scalar::Int32) {
+        out.put_le(static_cast<std::int32_t>(v));
+      } else if (s == Scalar::Int64) {
+        out.put_le(v);
+      } else {
+        out.put_le(static_cast<std::uint8_t>(v));
+      }
+    };
+    auto emit_real = [&](double v) {
+      if (raw)
+        out.put_le(v);
+      else
+        out.put_double(v);
+    };
+    const int num_fields = static_cast<int>(options.cell_fields.size());
+    // Array numbering: 0 vertex_marker, 1 marker, 2..2+F-1 fields, then
+    // points, connectivity, offsets, types.
+    if (array == 0) return emit_int(mesh.vertex_markers[i], Scalar::Int32);
+    if (array == 1) return emit_int(markers[i], Scalar::Int32);
+    if (array < 2 + num_fields) return emit_real(options.cell_fields[array - 2].values[i]);
+    const int rest = array - 2 - num_fields;
+    if (rest == 0) return emit_real(coord(mesh.vertices[i / 3], static_cast<int>(i % 3)));
+    if (rest == 1) return emit_int(cells[i / N][i % N], Scalar::Int64);
+    if (rest == 2) return emit_int(static_cast<std::int64_t>((i + 1) * N), Scalar::Int64);
+    return emit_int(D == 2 ? 5 : 10, Scalar::UInt8);
+  };
+
+  std::vector<std::pair<int, ArraySpec>> arrays;  // (array number, spec)
+  if (!mesh.vertex_markers.empty()) arrays.push_back({0, {"vertex_marker", Scalar::Int32, 1, nv}});
+  if (!markers.empty()) arrays.push_back({1, {"marker", Scalar::Int32, 1, nc}});
+  for (std::size_t f = 0; f < options.cell_fields.size(); ++f)
+    arrays.push_back({2 + static_cast<int>(f), {options.cell_fields[f].name, Scalar::Float64, 1, nc}});
+  const int base = 2 + static_cast<int>(options.cell_fields.size());
+  arrays.push_back({base, {"Points", Scalar::Float64, 3, 3 * nv}});
+  arrays.push_back({base + 1, {"connectivity", Scalar::Int64, 1, N * nc}});
+  arrays.push_back({base + 2, {"offsets", Scalar::Int64, 1, nc}});
+  arrays.push_back({base + 3, {"types", Scalar::UInt8, 1, nc}});
+
+  std::vector<std::uint64_t> offsets;
+  std::uint64_t offset = 0;
+  for (const auto& [number, spec] : arrays) {
+    offsets.push_back(offset);
+    offset += 8 + spec.count * scalar_size(spec.scalar);
+  }
+
+  auto put_array = [&](std::size_t k) {
+    const ArraySpec& spec = arrays[k].second;
+    out.put("<DataArray type=\"").put(vtk_name(spec.scalar)).put("\" Name=\"").put(spec.name).put('"');
+    if (spec.components != 1) out.put(" NumberOfComponents=\"").put_int(spec.components).put('"');
+    if (binary) {
+      out.put(" format=\"appended\" offset=\"").put_int(static_cast<std::int64_t>(offsets[k])).put("\"/>\n");
+      return;
+    }
+    out.put(" format=\"ascii\">\n");
+    for (std::size_t i = 0; i < spec.count; ++i) {
+      put_value(arrays[k].first, i, false);
+      out.put((i + 1) % 12 == 0 || i + 1 == spec.count ? '\n' : ' ');
+    }
+    out.put("</DataArray>\n");
+  };
+
+  out.put("<?xml version=\"1.0\"?>\n");
+  out.put("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n");
+  out.put("<UnstructuredGrid>\n<Piece NumberOfPoints=\"").put_int(static_cast<std::int64_t>(nv));
+  out.put("\" NumberOfCells=\"").put_int(static_cast<std::int64_t>(nc)).put("\">\n");
+  std::size_t k = 0;
+  if (!mesh.vertex_markers.empty()) {
+    out.put("<PointData>\n");
+    put_array(k++);
+    out.put("</PointData>\n");
+  }
+  if (!markers.empty() || !options.cell_fields.empty()) {
+    out.put("<CellData>\n");
+    if (!markers.empty()) put_array(k++);
+    for (std::size_t f = 0; f < options.cell_fields.size(); ++f) put_array(k++);
+    out.put("</CellData>\n");
+  }
+  out.put("<Points>\n");
+  put_array(k++);
+  out.put("</Points>\n<Cells>\n");
+  put_array(k++);
+  put_array(k++);
+  put_array(k++);
+  out.put("</Cells>\n</Piece>\n</UnstructuredGrid>\n");
+  if (binary) {
+    out.put("<AppendedData encoding=\"raw\">\n_");
+    for (const auto& [number, spec] : arrays) {
+      out.put_le(static_cast<std::uint64_t>(spec.count * scalar_size(spec.scalar)));
+      for (std::size_t i = 0; i < spec.count; ++i) put_value(number, i, true);
+    }
+    out.put("\n</AppendedData>\n");
+  }
+  out.put("</VTKFile>\n");
+}
+
+// ---------------------------------------------------------------- reading
+
+struct XmlArray {
+  std::string section;  // PointData, CellData, Points, Cells
+  std::string name, type, format;
+  int components = 1;
+  std::int64_t offset = -1;
+  std::string_view content;
+  int line = 0;
+};
+
+class VtuReader {
+ public:
+  VtuReader(const std::string& path, int dim) : path_(path), dim_(dim), text_(read_whole_file(path)) {}
+
+  RawMesh run();
+
+ private:
+  [[noreturn]] void fail(ErrorCode code, const std::string& detail, int line) const {
+    throw ParseError(code, detail, {}, path_, line);
+  }
+  int line_at(std::size_t pos) const {
+    return 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+  }
+  void parse_xml(std::size_t end);
+  std::vector<double> values(const XmlArray& a, std::size_t expected);
+  std::vector<unsigned char> decode_base64(std::string_view text, std::size_t header_bytes, int line) const;
+
+  std::string path_;
+  int dim_;
+  std::string text_;
+  std::string header_type_ = "UInt32";
+  std::string appended_encoding_;
+  std::size_t appended_start_ = 0;  // first byte after '_'
+  std::int64_t num_points_ = -1, num_cells_ = -1;
+  std::vector<XmlArray> arrays_;
+};
+
+// Attribute value of `name` in the tag text [begin, end), or "".
+std::string_view attribute(std::string_view tag, std::string_view name) {
+  std::size_t pos = 0;
+  while ((pos = tag.find(name, pos)) != std::string_view::npos) {
+    const bool starts = pos > 0 && std::isspace(static_cast<unsigned char>(tag[pos - 1]));
+    std::size_t p = pos + name.size();
+    while (p < tag.size() && std::isspace(static_cast<unsigned char>(tag[p]))) ++p;
+    if (starts && p < tag.size() && tag[p] == '=') {
+      ++p;
+      while (p < tag.size() && std::isspace(static_cast<unsigned char>(tag[p]))) ++p;
+      if (p < tag.size() && (tag[p] == '"' || tag[p] == '\'')) {
+        const std::size_t close = tag.find(tag[p], p + 1);
+        if (close != std::string_view::npos) return tag.substr(p + 1, close - p - 1);
+      }
+    }
+    pos += name.size();
+  }
+  return {};
+}
+
+void VtuReader::parse_xml(std::size_t end) {
+  std::string_view text(text_.data(), end);
+  std::string section;
+  std::size_t pos = 0;
+  bool seen_root = false;
+  while ((pos = text.find('<', pos)) != std::string_view::npos) {
+    const std::size_t close = text.find('>', pos);
+    if (close == std::string_view::npos) fail(ErrorCode::Truncated, "unterminated XML tag", line_at(pos));
+    const std::string_view tag = text.substr(pos + 1, close - pos - 1);
+    const int line = line_at(pos);
+    std::size_t name_end = 0;
+    while (name_end < tag.size() && !std::isspace(static_cast<unsigned char>(tag[name_end])) && tag[name_end] != '/')
+      ++name_end;
+    const std::string_view name = tag.substr(0, name_end);
+    const bool self_closing = !tag.empty() && tag.back() == '/';
+    pos = close + 1;
+    if (name.empty() || name[0] == '?' || name[0] == '!') continue;
+    if (name == "VTKFile") {
+      seen_root = true;
+      if (attribute(tag, "type") != "UnstructuredGrid")
+        fail(ErrorCode::Unsupported, "VTK file type '" + std::string(attribute(tag, "type")) + "'", line);
+      if (!attribute(tag, "compressor").empty())
+        fail(ErrorCode::Unsupported, "compressed VTU data (write without compression)", line);
+      const std::string_view order = attribute(tag, "byte_order");
+      if (!order.empty() && order != "LittleEndian") fail(ErrorCode::Unsupported, "big-endian VTU data", line);
+      if (!attribute(tag, "header_type").empty()) header_type_ = std::string(attribute(tag, "header_type"));
+      if (header_type_ != "UInt32" && header_type_ != "UInt64")
+        fail(ErrorCode::Unsupported, "header_type " + header_type_, line);
+    } else if (name == "Piece") {
+      if (num_points_ >= 0) fail(ErrorCode::Unsupported, "more than one Piece", line);
+      auto number = [&](const char* attr) {
+        const std::string_view v = attribute(tag, attr);
+        std::int64_t n = -1;
+        auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+        if (ec != std::errc() || p != v.data() + v.size() || n < 0 || n > INT32_MAX - 1)
+          fail(ErrorCode::Syntax, std::string("bad ") + attr + " '" + std::string(v) + "'", line);
+        return n;
+      };
+      num_points_ = number("NumberOfPoints");
+      num_cells_ = number("NumberOfCells");
+    } else if (name == "PointData" || name == "CellData" || name == "Points" || name == "Cells") {
+      section = self_closing ? "" : std::string(name);
+    } else if (name == "/PointData" || name == "/CellData" || name == "/Points" || name == "/Cells") {
+      section.clear();
+    } else if (name == "DataArray") {
+      XmlArray a;
+      a.section = section;
+      a.name = std::string(attribute(tag, "Name"));
+      a.type = std::string(attribute(tag, "type"));
+      a.format = std::string(attribute(tag, "format"));
+      a.line = line;
+      const std::string_view comps = attribute(tag, "NumberOfComponents");
+      if (!comps.empty()) {
+        auto [p, ec] = std::from_chars(comps.data(), comps.data() + comps.size(), a.components);
+        if (ec != std::errc() || a.components < 1 || a.components > 9)
+          fail(ErrorCode::Syntax, "bad NumberOfComponents", line);
+      }
+      if (a.format == "appended") {
+        const std::string_view off = attribute(tag, "offset");
+        auto [p, ec] = std::from_chars(off.data(), off.data() + off.size(), a.offset);
+        if (ec != std::errc() || a.offset < 0) fail(ErrorCode::Syntax, "bad appended offset", line);
+      } else if (!self_closing) {
+        const std::size_t end_tag = text.find("</DataArray>", pos);
+        if (end_tag == std::string_view::npos) fail(ErrorCode::Truncated, "DataArray is not closed", line);
+        a.content = text.substr(pos, end_tag - pos);
+        pos = end_tag + 12;
+      }
+      if (!a.section.empty()) arrays_.push_back(std::move(a));
+    }
+  }
+  if (!seen_root) fail(ErrorCode::Syntax, "not a VTK XML file (no <VTKFile>)", 1);
+  if (num_points_ < 0) fail(ErrorCode::Truncated, "no <Piece>", line_at(end));
+}
+
+// Decodes base64 in independent 4-character groups, so that streams made of
+// separately encoded (padded) blocks decode as well as a single block.
+std::vector<unsigned char> VtuReader::decode_base64(std::string_view text, std::size_t max_bytes, int line) const {
+  auto value = [](char c) -> int {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    if (c == '=') return -2;
+    return -1;
+  };
+  std::vector<unsigned char> bytes;
+  int group[4];
+  int n = 0;
+  for (char c : text) {
+    if (bytes.size() >= max_bytes) break;
+    const int v = value(c);
+    if (v == -1) {
+      if (std::isspace(static_cast<unsigned char>(c))) continue;
+      fail(ErrorCode::Syntax, "invalid base64 character", line);
+    }
+    group[n++] = v;
+    if (n < 4) continue;
+    n = 0;
+    if (group[0] < 0 || group[1] < 0) fail(ErrorCode::Syntax, "invalid base64 padding", line);
+    bytes.push_back(static_cast<unsigned char>((group[0] << 2) | (group[1] >> 4)));
+    if (group[2] >= 0) bytes.push_back(static_cast<unsigned char>(((group[1] & 15) << 4) | (group[2] >> 2)));
+    if (group[2] >= 0 && group[3] >= 0) bytes.push_back(static_cast<unsigned char>(((group[2] & 3) << 6) | group[3]));
+  }
+  return bytes;
+}
+
+std::vector<double> VtuReader::values(const XmlArray& a, std::size_t expected) {
+  struct TypeInfo {
+    const char* name;
+    std::size_t size;
+    bool is_float, is_signed;
+  };
+  static const TypeInfo kTypes[] = {{"Int8", 1, false, true},    {"UInt8", 1, false, false},  {"Int16", 2, false, true},
+                                    {"UInt16", 2, false, false}, {"Int32", 4, false, true},   {"UInt32", 4, false, false},
+                                    {"Int64", 8, false, true},   {"UInt64", 8, false, false}, {"Float32", 4, true, true},
+                                    {"Float64", 8, true, true}};
+  const TypeInfo* type = nullptr;
+  for (const TypeInfo& t : kTypes)
+    if (a.type == t.name) type = &t;
+  if (type == nullptr) fail(ErrorCode::Unsupported, "DataArray type '" + a.type + "'", a.line);
+  std::vector<double> out;
+  out.reserve(expected);
+  if (a.format == "ascii") {
+    const char* p = a.content.data();
+    const char* end = p + a.content.size();
+    while (true) {
+      while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+      if (p >= end) break;
+      double v = 0;
+      auto [q, ec] = std::from_chars(p, end, v);
+      if (ec != std::errc() || (q < end && !std::isspace(static_cast<unsigned char>(*q))))
+        fail(ErrorCode::Syntax, "bad number in DataArray '" + a.name + "'", a.line);
+      if (!std::isfinite(v)) fail(ErrorCode::NonFinite, "non-finite value in DataArray '" + a.name + "'", a.line);
+      out.push_back(v);
+      p = q;
+    }
+  } else {
+    const std::size_t header = header_type_ == "UInt64" ? 8 : 4;
+    std::vector<unsigned char> bytes;
+    if (a.format == "binary") {
+      bytes = decode_base64(a.content, SIZE_MAX, a.line);
+    } else if (a.format == "appended") {
+      if (appended_encoding_.empty()) fail(ErrorCode::Syntax, "appended DataArray without <AppendedData>", a.line);
+      const std::size_t start = appended_start_ + static_cast<std::size_t>(a.offset);
+      if (start > text_.size()) fail(ErrorCode::Truncated, "appended offset beyond the end of the file", a.line);
+      if (appended_encoding_ == "raw") {
+        if (start + header > text_.size()) fail(ErrorCode::Truncated, "appended data ends early", a.line);
+        std::uint64_t size = 0;
+        for (std::size_t k = 0; k < header; ++k)
+          size |= static_cast<std::uint64_t>(static_cast<unsigned char>(text_[start + k])) << (8 * k);
+        if (size > text_.size() - start - header) fail(ErrorCode::Truncated, "appended data ends early", a.line);
+        bytes.assign(text_.begin() + static_cast<std::ptrdiff_t>(start),
+                     text_.begin() + static_cast<std::ptrdiff_t>(start + header + size));
+      } else {
+        bytes = decode_base64(std::string_view(text_).substr(start), header + expected * type->size, a.line);
+      }
+    } else {
+      fail(ErrorCode::Unsupported, "DataArray format '" + a.format + "'", a.line);
+    }
+    if (bytes.size() < header) fail(ErrorCode::Truncated, "binary DataArray without header", a.line);
+    std::uint64_t size = 0;
+    for (std::size_t k = 0; k < header; ++k) size |= static_cast<std::uint64_t>(bytes[k]) << (8 * k);
+    if (size % type->size != 0 || size > bytes.size() - header)
+      fail(ErrorCode::WrongCount, "binary DataArray '" + a.name + "' has a bad byte count", a.line);
+    const std::size_t n = static_cast<std::size_t>(size / type->size);
+    for (std::size_t i = 0; i < n; ++i) {
+      const unsigned char* b = bytes.data() + header + i * type->size;
+      std::uint64_t bits = 0;
+      for (std::size_t k = 0; k < type->size; ++k) bits |= static_cast<std::uint64_t>(b[k]) << (8 * k);
+      double v = 0;
+      if (type->is_float && type->size == 8) {
+        std::memcpy(&v, &bits, 8);
+      } else if (type->is_float) {
+        const std::uint32_t bits32 = static_cast<std::uint32_t>(bits);
+        float f = 0;
+        std::memcpy(&f, &bits32, 4);
+        v = f;
+      } else if (type->is_signed) {
+        const unsigned shift = static_cast<unsigned>(64 - 8 * type->size);
+        v = static_cast<double>(static_cast<std::int64_t>(bits << shift) >> shift);
+      } else {
+        v = static_cast<double>(bits);
+      }
+      if (!std::isfinite(v)) fail(ErrorCode::NonFinite, "non-finite value in DataArray '" + a.name + "'", a.line);
+      out.push_back(v);
+    }
+  }
+  if (out.size() != expected)
+    fail(ErrorCode::WrongCount,
+         "DataArray '" + a.name + "' has " + std::to_string(out.size()) + " values, expected " +
+             std::to_string(expected),
+         a.line);
+  return out;
+}
+
+int to_int(double v, const std::string& what, const std::string& path, int line) {
+  if (v != std::floor(v) || v < INT32_MIN || v > INT32_MAX)
+    throw ParseError(ErrorCode::Syntax, what + " value is not a 32-bit integer", {}, path, line);
+  return static_cast<int>(v);
+}
+
+RawMesh VtuReader::run() {
+  const std::size_t appended = text_.find("<AppendedData");
+  const std::size_t xml_end = appended == std::string::npos ? text_.size() : appended;
+  if (appended != std::string::npos) {
+    const std::size_t close = text_.find('>', appended);
+    if (close == std::string::npos) fail(ErrorCode::Truncated, "unterminated <AppendedData>", line_at(appended));
+    const std::string_view tag(text_.data() + appended + 1, close - appended - 1);
+    appended_encoding_ = std::string(attribute(tag, "encoding"));
+    if (appended_encoding_ != "raw" && appended_encoding_ != "base64")
+      fail(ErrorCode::Unsupported, "AppendedData encoding '" + appended_encoding_ + "'", line_at(appended));
+    const std::size_t underscore = text_.find('_', close);
+    if (underscore == std::string::npos) fail(ErrorCode::Truncated, "AppendedData without '_'", line_at(close));
+    appended_start_ = underscore + 1;
+  }
+  parse_xml(xml_end);
+  const auto np = static_cast<std::size_t>(num_points_);
+  const auto nc = static_cast<std::size_t>(num_cells_);
+  const XmlArray *points = nullptr, *conn = nullptr, *offs = nullptr, *types = nullptr, *marker = nullptr,
+                 *vmarker = nullptr;
+  for (const XmlArray& a : arrays_) {
+    if (a.section == "Points" && !points) points = &a;
+    if (a.section == "Cells" && a.name == "connectivity") conn = &a;
+    if (a.section == "Cells" && a.name == "offsets") offs = &a;
+    if (a.section == "Cells" && a.name == "types") types = &a;
+    if (a.section == "CellData" && a.name == "marker") marker = &a;
+    if (a.section == "PointData" && a.name == "vertex_marker") vmarker = &a;
+  }
+  if (!points || !conn || !offs || !types)
+    fail(ErrorCode::Truncated, "missing Points or Cells connectivity/offsets/types", line_at(xml_end));
+  if (points->components != 3) fail(ErrorCode::Unsupported, "Points must have 3 components", points->line);
+  RawMesh raw;
+  raw.xyz = values(*points, 3 * np);
+  const std::vector<double> offsets = values(*offs, nc);
+  const std::vector<double> type_values = values(*types, nc);
+  const std::size_t total = nc == 0 ? 0 : static_cast<std::size_t>(std::max(0.0, offsets.back()));
+  const std::vector<double> connectivity = values(*conn, total);
+  std::vector<double> markers;
+  if (marker) markers = values(*marker, nc);
+  if (vmarker) {
+    for (double v : values(*vmarker, np)) raw.vertex_markers.push_back(to_int(v, "vertex_marker", path_, vmarker->line));
+  }
+  const int cell_type = dim_ == 2 ? 5 : 10, face_type = dim_ == 2 ? 3 : 5, ignored_type = dim_ == 2 ? 1 : 3;
+  double previous = 0;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const int type = static_cast<int>(type_values[c]);
+    const double end = offsets[c];
+    const double count = end - previous;
+    const int expected = type == cell_type ? dim_ + 1 : type == face_type ? dim_ : -1;
+    if (type != cell_type && type != face_type && type != ignored_type && type != 1)
+      fail(ErrorCode::Unsupported, "cell " + std::to_string(c) + " has VTK type " + std::to_string(type), types->line);
+    if (end < previous || end > static_cast<double>(total) || (expected > 0 && count != expected))
+      fail(ErrorCode::WrongCount, "cell " + std::to_string(c) + " has a bad offset", offs->line);
+    for (auto k = static_cast<std::size_t>(previous); k < static_cast<std::size_t>(end); ++k) {
+      const double v = connectivity[k];
+      if (v < 0 || v >= static_cast<double>(np) || v != std::floor(v))
+        fail(ErrorCode::IndexOutOfRange, "cell " + std::to_string(c) + " refers to point " + std::to_string(v),
+             conn->line);
+      if (expected > 0) (type == cell_type ? raw.cells : raw.faces).push_back(static_cast<int>(v));
+    }
+    if (expected > 0) {
+      const int m = marker ? to_int(markers[c], "marker", path_, marker->line) : 0;
+      (type == cell_type ? raw.cell_markers : raw.face_markers).push_back(m);
+    }
+    previous = end;
+  }
+  return raw;
+}
+
+}  // namespace
+
+template <class M>
+void write_vtu(const M& mesh, const std::string& path, const WriteOptions& options) {
+  AtomicFile file(path);
+  BufferedWriter out(file.file(), path);
+  write_body(mesh, out, options);
+  out.flush();
+  file.commit();
+}
+
+template void write_vtu(const TriMesh2&, const std::string&, const WriteOptions&);
+template void write_vtu(const TetMesh3&, const std::string&, const WriteOptions&);
+
+RawMesh read_vtu(const std::string& path, int dim) { return VtuReader(path, dim).run(); }
+
+}  // namespace pqmesh::detail

@@ -1,0 +1,226 @@
+// Shape measures of one triangle or tetrahedron (thesis ch. 3; DESIGN.md §6).
+//
+// Everything here is a construction in double except the few yes/no questions
+// whose answer changes WHICH formula applies (is the simplex degenerate, is a
+// triangle angle obtuse, does an edge's diametral ball hold a vertex): those go
+// through the exact predicates. The single exception is documented at
+// face_ball_contains(): a measurement tolerance, never a meshing decision.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "predicates/predicates.hpp"
+#include "pqmesh/quality.hpp"
+
+namespace pqmesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+constexpr double sq(double v) { return v * v; }
+constexpr double norm2(Vec3 v) { return dot(v, v); }
+
+// The unsigned value |v| carrying the exact sign s (Zero -> exactly 0). Used so
+// that the sign of a reported area/volume always agrees with the exact orient
+// predicate, even when the double determinant rounds the other way.
+double with_sign(double v, Sign s) {
+  switch (s) {
+    case Sign::Positive: return std::abs(v);
+    case Sign::Negative: return -std::abs(v);
+    case Sign::Zero: break;
+  }
+  return 0.0;
+}
+
+// ---- triangles ----
+
+// `circum` is the circumradius, passed in so that a caller holding it does not
+// recompute it and so that R_enc <= R holds exactly in floating point.
+double tri_enclosing_radius(Vec2 a, Vec2 b, Vec2 c, double circum) {
+  // The smallest enclosing circle of a triangle with a right or obtuse angle is
+  // the diametral circle of the edge opposite that angle (the longest edge);
+  // otherwise it is the circumcircle. The angle test is exact (dot_sign).
+  if (dot_sign(a, b, c) != Sign::Positive) return 0.5 * norm(c - b);
+  if (dot_sign(b, c, a) != Sign::Positive) return 0.5 * norm(a - c);
+  if (dot_sign(c, a, b) != Sign::Positive) return 0.5 * norm(b - a);
+  return circum;
+}
+
+// ---- tetrahedra ----
+
+// Containment test for the face-circumcircle candidate balls of the minimal
+// enclosing ball search. It compares a constructed centre and radius with a
+// relative slack of kBallSlack on squared lengths. That is a tolerance, which
+// DESIGN.md §3 forbids in decisions; it is acceptable HERE because the result
+// is only a measurement: accepting a ball that misses a vertex by the slack
+// understates R_enc by at most ~kBallSlack/2 relative, and rejecting the true
+// minimal ball because of rounding would overstate it by a whole candidate.
+constexpr double kBallSlack = 1e-10;
+
+bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {
+  return norm2(p - centre) <= radius2 * (1.0 + kBallSlack);
+}
+
+// Smallest enclosing ball of four points (any position, also coplanar or
+// coincident). The minimal enclosing ball is the smallest ball through a
+// support set of 2, 3 or 4 of the points with its centre in their hull, so it is
+// one of: the diametral ball of one of the 6 edges, the circumcircle ball of one
+// of the 4 faces (centre in the face plane), or the circumsphere. Every
+// candidate that contains all four points is an enclosing ball, hence at least
+// as large as the minimal one; the minimal one is a candidate and contains all
+// four. So the answer is the smallest candidate that contains all four points.
+double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r) {
+  double best = circum_r;  // +infinity for a flat tetrahedron
+  static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                       {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  for (const auto& e : kEdges) {
+    // Vertex k lies in the closed diametral ball of edge ij iff the angle ikj is
+    // right or obtuse: exact.
+    if (dot_sign(p[e[2]], p[e[0]], p[e[1]]) != Sign::Positive &&
+        dot_sign(p[e[3]], p[e[0]], p[e[1]]) != Sign::Positive) {
+      best = std::min(best, 0.5 * norm(p[e[1]] - p[e[0]]));
+    }
+  }
+  for (int l = 0; l < 4; ++l) {  // face opposite vertex l
+    const Vec3 o = p[(l + 1) % 4];
+    const Vec3 u = p[(l + 2) % 4] - o;
+    const Vec3 v = p[(l + 3) % 4] - o;
+    const Vec3 w = cross(u, v);
+    const double w2 = norm2(w);
+    if (w2 == 0.0) continue;  // collinear face: no circumcircle, edges cover it
+    // Circumcentre of the face relative to o: x with x.u = |u|^2/2, x.v = |v|^2/2, x.w = 0.
+    const Vec3 x = (1.0 / (2.0 * w2)) * cross(norm2(u) * v - norm2(v) * u, w);
+    const double r2 = norm2(x);
+    if (std::sqrt(r2) < best && face_ball_contains(o + x, r2, p[l])) best = std::sqrt(r2);
+  }
+  return best;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+double signed_area(Vec2 a, Vec2 b, Vec2 c) {
+  return with_sign(0.5 * cross(b - a, c - a), orient2d(a, b, c));
+}
+
+double signed_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return with_sign(dot(cross(b - a, c - a), d - a) / 6.0, orient3d(a, b, c, d));
+}
+
+double inradius(Vec2 a, Vec2 b, Vec2 c) {
+  const double s = 0.5 * (norm(b - a) + norm(c - b) + norm(a - c));
+  const double area = std::abs(signed_area(a, b, c));
+  return area == 0.0 ? 0.0 : area / s;
+}
+
+double inradius(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  // r = 3V / S: the tetrahedron is the union of four cones from the incentre
+  // over the faces, each of height r.
+  const double faces = 0.5 * (norm(cross(d - b, c - b)) + norm(cross(c - a, d - a)) +
+                              norm(cross(d - a, b - a)) + norm(cross(b - a, c - a)));
+  const double vol = std::abs(signed_volume(a, b, c, d));
+  return vol == 0.0 ? 0.0 : 3.0 * vol / faces;
+}
+
+double circumradius(Vec2 a, Vec2 b, Vec2 c) {
+  // R = (product of the edge lengths) / (4 A).
+  const double area = std::abs(signed_area(a, b, c));
+  if (area == 0.0) return kInf;
+  return norm(b - a) * norm(c - b) * norm(a - c) / (4.0 * area);
+}
+
+double circumradius(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  if (orient3d(a, b, c, d) == Sign::Zero) return kInf;
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  const double det = dot(u, cross(v, w));
+  if (det == 0.0) return kInf;
+  // Centre x relative to a solves x.u = |u|^2/2, x.v = |v|^2/2, x.w = |w|^2/2.
+  const Vec3 x = (0.5 / det) * (norm2(u) * cross(v, w) + norm2(v) * cross(w, u) + norm2(w) * cross(u, v));
+  return norm(x);
+}
+
+double enclosing_radius(Vec2 a, Vec2 b, Vec2 c) { return tri_enclosing_radius(a, b, c, circumradius(a, b, c)); }
+
+double enclosing_radius(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return tet_enclosing_radius({a, b, c, d}, circumradius(a, b, c, d));
+}
+
+TriQuality triangle_quality(Vec2 a, Vec2 b, Vec2 c) {
+  TriQuality q{};
+  const Vec2 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = norm(ab), lbc = norm(bc), lca = norm(ca);
+  const Sign orientation = orient2d(a, b, c);
+  q.area = with_sign(0.5 * cross(ab, c - a), orientation);
+  if (orientation == Sign::Zero) {
+    // Degenerate (collinear or coincident): its angles are 0, 0, 180.
+    q.min_angle_deg = 0.0;
+    q.max_angle_deg = 180.0;
+    q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
+    return q;
+  }
+  const double angle_a = angle_between(b - a, c - a);
+  const double angle_b = angle_between(c - b, a - b);
+  const double angle_c = angle_between(a - c, b - c);
+  q.min_angle_deg = std::min({angle_a, angle_b, angle_c}) * kDeg;
+  q.max_angle_deg = std::max({angle_a, angle_b, angle_c}) * kDeg;
+  const double area = std::abs(q.area);
+  // A nonzero exact orientation means at least two distinct points, so s > 0
+  // and R > 0; a double area that underflowed to 0 yields +infinity, not NaN.
+  const double r = area / (0.5 * (lab + lbc + lca));
+  const double circum = lab * lbc * lca / (4.0 * area);
+  q.aspect_ratio = tri_enclosing_radius(a, b, c, circum) / r;
+  q.sphere_ratio = circum / r;
+  q.radius_edge = circum / std::min({lab, lbc, lca});
+  return q;
+}
+
+TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  TetQuality q{};
+  const Sign orientation = orient3d(a, b, c, d);
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  // Area vectors of the faces opposite a, b, c, d: each is the gradient of
+  // 6 x volume with respect to that vertex, so for a positive tetrahedron all
+  // four point INTO the tetrahedron (towards the opposite vertex), and for an
+  // inverted one all four point out. Either way the dihedral angle at the edge
+  // shared by faces k and l is pi - angle(N_k, N_l).
+  const std::array<Vec3, 4> n = {cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)};
+  const double det = dot(u, n[1]);
+  q.volume = with_sign(det / 6.0, orientation);
+  if (orientation == Sign::Zero) {
+    q.min_dihedral_deg = 0.0;
+    q.max_dihedral_deg = 180.0;
+    q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
+    return q;
+  }
+  double min_dihedral = kInf, max_dihedral = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    for (int l = k + 1; l < 4; ++l) {
+      const double theta = std::numbers::pi - angle_between(n[k], n[l]);
+      min_dihedral = std::min(min_dihedral, theta);
+      max_dihedral = std::max(max_dihedral, theta);
+    }
+  }
+  q.min_dihedral_deg = min_dihedral * kDeg;
+  q.max_dihedral_deg = max_dihedral * kDeg;
+
+  const double faces = 0.5 * (norm(n[0]) + norm(n[1]) + norm(n[2]) + norm(n[3]));
+  const double r = 3.0 * std::abs(q.volume) / faces;
+  double circum = kInf;
+  if (det != 0.0) {
+    const Vec3 x = (0.5 / det) * (norm2(u) * n[1] + norm2(v) * n[2] + norm2(w) * n[3]);
+    circum = norm(x);
+  }
+  const double shortest2 = std::min({norm2(u), norm2(v), norm2(w), norm2(c - b), norm2(d - b), norm2(d - c)});
+  // The circumsphere is one of the candidates, with the very same double value,
+  // so aspect_ratio <= sphere_ratio holds exactly in floating point too.
+  q.aspect_ratio = tet_enclosing_radius({a, b, c, d}, circum) / r;
+  q.sphere_ratio = circum / r;
+  q.radius_edge = circum / std::sqrt(shortest2);
+  return q;
+}
+
+}  // namespace pqmesh

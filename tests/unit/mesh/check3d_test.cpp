@@ -1,0 +1,309 @@
+// The 3D validity checker on hand-built tetrahedral meshes. Corner ids of a
+// box are i + 2j + 4k (check_fixtures.hpp). Orientations of the hand-written
+// tetrahedra were derived by hand (determinants noted); expected kinds and ids
+// are derived in the comments.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "check_fixtures.hpp"
+#include "pqmesh/check.hpp"
+
+namespace pqmesh {
+namespace {
+
+using test::box_corner;
+using test::box_domain;
+using test::box_loops;
+using test::facet_domain;
+using test::kuhn_grid;
+using test::positive;
+
+const Vec3 kO{0, 0, 0}, kOne{1, 1, 1};
+
+// The unit cube in 5 tetrahedra: the central one on the odd corners 1, 2, 4, 7
+// (det 2, volume 1/3) and one per even corner: (0 1 2 4) det 1; (3 2 1 7) det 1
+// (from (3 1 2 7) with det -1, swapped); (5 1 4 7) det 1; (6 4 2 7) det 1.
+TetMesh3 cube5() {
+  TetMesh3 m;
+  for (int v = 0; v < 8; ++v) m.vertices.push_back(box_corner(kO, kOne, v));
+  m.tetrahedra = {{0, 1, 2, 4}, {1, 2, 4, 7}, {3, 2, 1, 7}, {5, 1, 4, 7}, {6, 4, 2, 7}};
+  return m;
+}
+
+// The 12 outward boundary triangles of cube5: faces (a d c), (a b d), (a c b)
+// of each corner tetrahedron (a b c d); the fourth face (b c d) is the one it
+// shares with the central tetrahedron.
+std::vector<std::array<int, 3>> cube5_faces() {
+  return {{0, 4, 2}, {0, 1, 4}, {0, 2, 1}, {3, 7, 1}, {3, 2, 7}, {3, 1, 2},
+          {5, 7, 4}, {5, 1, 7}, {5, 4, 1}, {6, 7, 2}, {6, 4, 7}, {6, 2, 4}};
+}
+
+TetMesh3 cube6() { return kuhn_grid(1, kO, 1.0); }
+
+// [0,3]^3 without the cavity [1,2]^3: the 26 outer cells of a 3x3x3 Kuhn grid.
+TetMesh3 cavity_mesh() {
+  return kuhn_grid(3, kO, 1.0, [](int i, int j, int k) { return i == 1 && j == 1 && k == 1; });
+}
+
+Domain3 cavity_domain() {
+  std::vector<Vec3> v;
+  for (int i = 0; i < 8; ++i) v.push_back(box_corner({0, 0, 0}, {3, 3, 3}, i));
+  for (int i = 0; i < 8; ++i) v.push_back(box_corner({1, 1, 1}, {2, 2, 2}, i));
+  auto loops = box_loops(0);
+  for (auto& l : box_loops(8, /*inward=*/true)) loops.push_back(l);  // outward of P = into the cavity
+  return facet_domain(v, loops, 27.0 - 1.0, /*floater_from=*/6);
+}
+
+std::vector<CheckKind> kinds(const CheckReport& r) { return r.kinds(); }
+
+TEST(Check3d, CubeInFiveTetrahedraIsValid) {
+  const TetMesh3 m = cube5();
+  for (const auto& t : m.tetrahedra) ASSERT_GT(test::det6(m.vertices, t), 0);
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_EQ(r.boundary_faces, 12);
+  EXPECT_DOUBLE_EQ(r.mesh_volume, 1.0);
+  EXPECT_NE(r.to_text().find("valid: 5 tetrahedra, 8 vertices, 12 boundary triangles"), std::string::npos)
+      << r.to_text();
+}
+
+TEST(Check3d, CubeInSixTetrahedraIsValid) {
+  const TetMesh3 m = cube6();
+  for (const auto& t : m.tetrahedra) ASSERT_GT(test::det6(m.vertices, t), 0);
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_EQ(r.boundary_faces, 12);
+}
+
+TEST(Check3d, CubeWithCavityIsValid) {
+  const CheckReport r = check_mesh(cavity_mesh(), cavity_domain());
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_EQ(r.elements, 26 * 6);
+  // 6 outer faces x 9 squares x 2 triangles + 6 cavity faces x 2 triangles.
+  EXPECT_EQ(r.boundary_faces, 108 + 12);
+  EXPECT_DOUBLE_EQ(r.mesh_volume, 26.0);
+}
+
+TEST(Check3d, ListedBoundaryFaces) {
+  TetMesh3 m = cube5();
+  m.faces = cube5_faces();
+  EXPECT_TRUE(check_mesh(m, box_domain(kO, kOne)).valid());
+
+  TetMesh3 reversed = m;
+  std::swap(reversed.faces[0][1], reversed.faces[0][2]);  // (0 2 4): inward
+  const CheckReport r = check_mesh(reversed, box_domain(kO, kOne));
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::BoundaryFace}) << r.to_text();
+  // Listed index 0 names the boundary face (0 4 2) with the inward orientation.
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].ids, (std::vector<std::int64_t>{0}));
+  EXPECT_NE(r.issues[0].message.find("inward"), std::string::npos);
+
+  TetMesh3 missing = m;
+  missing.faces.pop_back();  // (6 2 4) not listed
+  const CheckReport r2 = check_mesh(missing, box_domain(kO, kOne));
+  ASSERT_EQ(kinds(r2), std::vector<CheckKind>{CheckKind::BoundaryFace}) << r2.to_text();
+  EXPECT_EQ(r2.issues[0].ids, (std::vector<std::int64_t>{2, 4, 6}));
+}
+
+TEST(Check3d, FlippedTetrahedron) {
+  TetMesh3 m = cube5();
+  m.tetrahedra[0] = {0, 2, 1, 4};  // det -1
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::Orientation}) << r.to_text();
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].ids, (std::vector<std::int64_t>{0}));
+}
+
+TEST(Check3d, DegenerateTetrahedron) {
+  TetMesh3 m = cube5();
+  m.tetrahedra.push_back({0, 1, 3, 2});  // all on z = 0
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::DegenerateElement}) << r.to_text();
+  EXPECT_EQ(r.issues[0].ids, (std::vector<std::int64_t>{5}));
+}
+
+// Box [0,1]^2 x [0,2]: the lower unit cube is cube5 (its top face split along
+// the diagonal 4-7), the upper cube is the cone from m = (0.5, 0.5, 1) (id 12,
+// the midpoint of 4-7) over its five faces other than the bottom, each split
+// into two triangles. The volumes add up to 2 but m hangs on the lower cube's
+// top triangles.
+TEST(Check3d, HangingVertex) {
+  TetMesh3 m = cube5();
+  for (int v = 0; v < 4; ++v) m.vertices.push_back(box_corner({0, 0, 2}, {1, 1, 2}, v));  // 8..11 at z = 2
+  m.vertices.push_back({0.5, 0.5, 1});                                                    // 12
+  const int tris[10][3] = {{8, 9, 11}, {8, 11, 10}, {4, 5, 9}, {4, 9, 8}, {5, 7, 11},
+                           {5, 11, 9}, {7, 6, 10},  {7, 10, 11}, {6, 4, 8}, {6, 8, 10}};
+  for (const auto& t : tris) m.tetrahedra.push_back(positive(m.vertices, {12, t[0], t[1], t[2]}));
+  for (const auto& t : m.tetrahedra) ASSERT_GT(test::det6(m.vertices, t), 0);
+  const CheckReport r = check_mesh(m, box_domain(kO, {1, 1, 2}));
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::NonConforming}) << r.to_text();
+  ASSERT_EQ(r.count(CheckKind::NonConforming), 1);
+  EXPECT_EQ(r.issues[0].ids[0], 12);
+  EXPECT_DOUBLE_EQ(r.mesh_volume, 2.0);
+  EXPECT_EQ(check_mesh_topology(m).kinds(), std::vector<CheckKind>{CheckKind::NonConforming});
+}
+
+TEST(Check3d, DuplicatedTetrahedron) {
+  // The central tetrahedron twice: each of its 4 faces is on 3 tetrahedra
+  // (the two copies and a corner one); volume 4/3.
+  TetMesh3 m = cube5();
+  m.tetrahedra.push_back(m.tetrahedra[1]);
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::NonConforming, CheckKind::Volume})) << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::NonConforming), 4);
+  for (const auto& i : r.issues)
+    if (i.kind == CheckKind::NonConforming) {
+      EXPECT_EQ(i.ids.size(), 3u);
+      EXPECT_NE(std::find(i.ids.begin(), i.ids.end(), 1), i.ids.end());
+      EXPECT_NE(std::find(i.ids.begin(), i.ids.end(), 5), i.ids.end());
+    }
+}
+
+TEST(Check3d, OverlappingTetrahedra) {
+  // (0 1 2 7) (det 1) lies on the same side of face (0 1 2) as corner tet 0;
+  // it also puts face (1 2 7) on three tetrahedra.
+  TetMesh3 m = cube5();
+  m.tetrahedra.push_back({0, 1, 2, 7});
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::NonConforming, CheckKind::Volume})) << r.to_text();
+  bool pair = false;
+  for (const auto& i : r.issues)
+    if (i.kind == CheckKind::NonConforming && i.ids == std::vector<std::int64_t>{0, 5}) pair = true;
+  EXPECT_TRUE(pair) << r.to_text();
+}
+
+TEST(Check3d, MissingTetrahedronInTheBoundaryLayer) {
+  // Remove the first Kuhn tetrahedron of cell (1,1,0) (tet 24: cells (0..2,0,0)
+  // and (0,1,0) come first), path (1,1,0) (2,1,0) (2,2,0) (2,2,1). Its face on
+  // z = 0 leaves a hole in facet 0 (MissingFacet); its other three faces become
+  // boundary triangles inside the domain (BoundaryFace); volume 26 - 1/6.
+  TetMesh3 m = cavity_mesh();
+  const std::array<int, 4> t = m.tetrahedra[24];
+  EXPECT_EQ(m.vertices[t[0]], (Vec3{1, 1, 0}));
+  EXPECT_EQ(m.vertices[t[3]], (Vec3{2, 2, 1}));
+  m.tetrahedra.erase(m.tetrahedra.begin() + 24);
+  const CheckReport r = check_mesh(m, cavity_domain());
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::BoundaryFace, CheckKind::Volume, CheckKind::MissingFacet}))
+      << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::BoundaryFace), 3);
+  for (const auto& i : r.issues) {
+    if (i.kind == CheckKind::MissingFacet) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0}));
+  }
+  EXPECT_NEAR(r.mesh_volume, 26.0 - 1.0 / 6.0, 1e-12);
+}
+
+TEST(Check3d, MissingTetrahedronAtACubeEdge) {
+  // Kuhn tet 0 of the unit cube is (0 1 3 7): the only tetrahedron on the cube
+  // edge (1 3), so that input edge is lost; its faces (0 7 3) and (0 1 7) become
+  // boundary triangles inside the domain. The facets through (1 3) cannot be
+  // compared (their edge is missing); volume 5/6.
+  TetMesh3 m = cube6();
+  m.tetrahedra.erase(m.tetrahedra.begin());
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::BoundaryFace, CheckKind::Volume, CheckKind::MissingEdge}))
+      << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::BoundaryFace), 2);
+  for (const auto& i : r.issues) {
+    if (i.kind == CheckKind::MissingEdge) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{1, 3}));
+  }
+}
+
+TEST(Check3d, MissingInputVertex) {
+  // Input vertex 8 = (0.5, 0, 0) on the cube edge (0 1), in the loops of the
+  // bottom facet and the y = 0 facet (rotated to start at 8 so the fan
+  // triangles are not flat). cube5 lacks it.
+  std::vector<Vec3> v;
+  for (int i = 0; i < 8; ++i) v.push_back(box_corner(kO, kOne, i));
+  v.push_back({0.5, 0, 0});
+  auto loops = box_loops(0);
+  loops[0] = {8, 0, 2, 3, 1};
+  loops[2] = {8, 1, 5, 4, 0};
+  const CheckReport r = check_mesh(cube5(), facet_domain(v, loops, 1.0));
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::MissingVertex}) << r.to_text();
+  EXPECT_EQ(r.issues[0].ids, (std::vector<std::int64_t>{8}));
+}
+
+TEST(Check3d, InputEdgeNotRecovered) {
+  // The bottom facet split into two coplanar triangular facets (0 2 3) and
+  // (0 3 1) (normals -z) along the input edge (0 3). cube6's bottom triangles
+  // are exactly those two; cube5 splits the bottom along (1 2) instead, so the
+  // edge (0 3) is missing and its bottom triangles (0 2 1), (3 1 2) lie in
+  // neither facet.
+  std::vector<Vec3> v;
+  for (int i = 0; i < 8; ++i) v.push_back(box_corner(kO, kOne, i));
+  auto loops = box_loops(0);
+  loops[0] = {0, 2, 3};
+  loops.push_back({0, 3, 1});
+  const Domain3 d = facet_domain(v, loops, 1.0);
+  EXPECT_TRUE(check_mesh(cube6(), d).valid()) << check_mesh(cube6(), d).to_text();
+  const CheckReport r = check_mesh(cube5(), d);
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::BoundaryFace, CheckKind::MissingEdge})) << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::BoundaryFace), 2);
+  for (const auto& i : r.issues) {
+    if (i.kind == CheckKind::MissingEdge) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0, 3}));
+  }
+}
+
+TEST(Check3d, VertexOutside) {
+  TetMesh3 m = cube5();
+  m.vertices.push_back({2, 2, 2});
+  const CheckReport r = check_mesh(m, box_domain(kO, kOne));
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::UnusedVertex, CheckKind::VertexOutside})) << r.to_text();
+  for (const auto& i : r.issues) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{8}));
+}
+
+TEST(Check3d, SteinerPointsOnBoundaryOnlyWhenAsked) {
+  // The 4x4x4 grid points on the outer surface: 64 - 8 = 56, minus the 8
+  // input corners = 48 Steiner points; the cavity's surface has only its 8
+  // corners, all input vertices.
+  CheckOptions o;
+  o.no_boundary_steiner = true;
+  const CheckReport r = check_mesh(cavity_mesh(), cavity_domain(), o);
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::SteinerOnBoundary}) << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::SteinerOnBoundary), 48);
+  EXPECT_TRUE(check_mesh(cube5(), box_domain(kO, kOne), o).valid());
+}
+
+TEST(Check3d, TopologyOnly) {
+  EXPECT_TRUE(check_mesh_topology(cube5()).valid());
+  // Two tetrahedra sharing only the edge (0 1): (0,0,0) (1,0,0) (0,1,0) (0,0,1)
+  // (det 1) and its mirror (0,0,0) (1,0,0) (0,-1,0) (0,0,-1) (det 1). The edge
+  // is on four boundary triangles.
+  TetMesh3 m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {0, 0, -1}};
+  m.tetrahedra = {{0, 1, 2, 3}, {0, 1, 4, 5}};
+  const CheckReport r = check_mesh_topology(m);
+  ASSERT_EQ(kinds(r), std::vector<CheckKind>{CheckKind::BoundaryFace}) << r.to_text();
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].ids, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_NE(r.to_text().find("topology only"), std::string::npos);
+}
+
+TEST(Check3d, ReportTextIsReadable) {
+  TetMesh3 m = cube5();
+  m.tetrahedra[2] = {3, 1, 2, 7};  // det -1
+  const std::string text = check_mesh(m, box_domain(kO, kOne)).to_text();
+  EXPECT_EQ(text.rfind("invalid: 5 tetrahedra", 0), 0u) << text;
+  EXPECT_NE(text.find("[orientation] tetrahedron 2 (3 1 2 7) is negatively oriented"), std::string::npos) << text;
+  EXPECT_NE(text.find("note: conformity and domain checks skipped"), std::string::npos) << text;
+}
+
+TEST(Check3d, StructuredCubePerformance) {
+  // 32^3 cells x 6 = 196608 tetrahedra of the unit cube (dyadic coordinates).
+  const int n = 32;
+  const TetMesh3 m = kuhn_grid(n, kO, 1.0 / n);
+  const Domain3 d = box_domain(kO, kOne);
+  const auto t0 = std::chrono::steady_clock::now();
+  const CheckReport r = check_mesh(m, d);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("check_mesh: %zu tetrahedra, %zu vertices in %.3f s\n", m.tetrahedra.size(), m.vertices.size(),
+              seconds);
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_EQ(r.boundary_faces, 6 * n * n * 2);
+  EXPECT_LT(seconds, 20.0);
+}
+
+}  // namespace
+}  // namespace pqmesh

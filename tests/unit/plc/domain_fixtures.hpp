@@ -1,0 +1,128 @@
+#pragma once
+// PLC fixtures for the domain tests, built in code. Every facet here is listed
+// counter-clockwise seen from outside the solid it bounds (right-hand normal
+// outward), so tests can compare make_domain's orientation with it.
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "pqmesh/plc.hpp"
+
+namespace pqmesh::test {
+
+// Axis-aligned box [lo, hi]; vertex i = (bit0 ? hi.x : lo.x, bit1 ? ..y, bit2 ? ..z) + offset.
+// Facets: 0 bottom (-z), 1 top (+z), 2 front (-y), 3 back (+y), 4 left (-x), 5 right (+x).
+inline void add_box(Plc3& plc, Vec3 lo, Vec3 hi) {
+  const int o = static_cast<int>(plc.vertices.size());
+  for (int i = 0; i < 8; ++i)
+    plc.vertices.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) plc.facets.push_back(Facet3{{{o + q[0], o + q[1], o + q[2], o + q[3]}}, 0});
+}
+
+inline Plc3 box(Vec3 lo = {0, 0, 0}, Vec3 hi = {1, 1, 1}) {
+  Plc3 plc;
+  add_box(plc, lo, hi);
+  return plc;
+}
+
+// A box with every facet listed inside out (cavity orientation).
+inline void add_inverted_box(Plc3& plc, Vec3 lo, Vec3 hi) {
+  const std::size_t first = plc.facets.size();
+  add_box(plc, lo, hi);
+  for (std::size_t f = first; f < plc.facets.size(); ++f) {
+    auto& l = plc.facets[f].loops[0];
+    std::reverse(l.begin(), l.end());
+  }
+}
+
+// Prism over a counter-clockwise polygon (x, y) from z = 0 to z = h.
+// Facets: 0 bottom, 1 top, then side k over polygon edge k -> k+1.
+inline Plc3 prism(const std::vector<Vec2>& poly, double h) {
+  Plc3 plc;
+  const int n = static_cast<int>(poly.size());
+  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, 0});
+  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, h});
+  Facet3 bottom, top;
+  bottom.loops.emplace_back();
+  top.loops.emplace_back();
+  for (int k = n - 1; k >= 0; --k) bottom.loops[0].push_back(k);
+  for (int k = 0; k < n; ++k) top.loops[0].push_back(n + k);
+  plc.facets.push_back(bottom);
+  plc.facets.push_back(top);
+  for (int k = 0; k < n; ++k) {
+    const int k1 = (k + 1) % n;
+    plc.facets.push_back(Facet3{{{k, k1, n + k1, n + k}}, 0});
+  }
+  return plc;
+}
+
+// L-shaped prism: the L = [0,2]x[0,1] u [0,1]x[0,2], height 1 (volume 3).
+inline Plc3 l_block() { return prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1); }
+
+// [0,3]^2 x [0,1] with a square through hole [1,2]^2 (genus 1, volume 8).
+// Facets: 0 bottom (outer + hole loop), 1 top, 2-5 outer walls, 6-9 hole walls.
+inline Plc3 block_with_through_hole() {
+  Plc3 plc;
+  const Vec2 outer[4] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}};
+  const Vec2 inner[4] = {{1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  for (double z : {0.0, 1.0}) {
+    for (const auto& p : outer) plc.vertices.push_back({p.x, p.y, z});  // 0-3 (z=0), 8-11 (z=1)
+    for (const auto& p : inner) plc.vertices.push_back({p.x, p.y, z});  // 4-7 (z=0), 12-15 (z=1)
+  }
+  // Bottom seen from below: outer clockwise in (x, y), hole counter-clockwise.
+  plc.facets.push_back(Facet3{{{0, 3, 2, 1}, {4, 5, 6, 7}}, 0});
+  plc.facets.push_back(Facet3{{{8, 9, 10, 11}, {12, 15, 14, 13}}, 0});
+  for (int k = 0; k < 4; ++k) {
+    const int k1 = (k + 1) % 4;
+    plc.facets.push_back(Facet3{{{k, k1, 8 + k1, 8 + k}}, 0});
+  }
+  for (int k = 0; k < 4; ++k) {  // hole walls face the hole axis
+    const int k1 = (k + 1) % 4;
+    plc.facets.push_back(Facet3{{{4 + k1, 4 + k, 12 + k, 12 + k1}}, 0});
+  }
+  return plc;
+}
+
+// Regular octahedron |x| + |y| + |z| <= r.
+inline Plc3 octahedron(double r = 1) {
+  Plc3 plc;
+  plc.vertices = {{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+  for (int sx : {0, 1})
+    for (int sy : {2, 3})
+      for (int sz : {4, 5}) {
+        // (x, y, z) counter-clockwise from outside iff the sign product is positive.
+        const bool even = ((sx == 1) + (sy == 3) + (sz == 5)) % 2 == 0;
+        plc.facets.push_back(Facet3{{even ? std::vector<int>{sx, sy, sz} : std::vector<int>{sx, sz, sy}}, 0});
+      }
+  return plc;
+}
+
+// UV sphere of radius 1: `rings` latitude bands, `sectors` longitudes;
+// 2 * sectors * (rings - 1) triangles.
+inline Plc3 uv_sphere(int rings, int sectors) {
+  Plc3 plc;
+  const double pi = std::acos(-1.0);
+  plc.vertices.push_back({0, 0, 1});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const double t = pi * i / rings, p = 2 * pi * j / sectors;
+      plc.vertices.push_back({std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)});
+    }
+  plc.vertices.push_back({0, 0, -1});
+  const int south = static_cast<int>(plc.vertices.size()) - 1;
+  auto at = [&](int i, int j) { return 1 + (i - 1) * sectors + (j % sectors); };
+  for (int j = 0; j < sectors; ++j) {
+    plc.facets.push_back(Facet3{{{0, at(1, j), at(1, j + 1)}}, 0});
+    plc.facets.push_back(Facet3{{{south, at(rings - 1, j + 1), at(rings - 1, j)}}, 0});
+  }
+  for (int i = 1; i + 1 < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      plc.facets.push_back(Facet3{{{at(i, j), at(i + 1, j), at(i + 1, j + 1)}}, 0});
+      plc.facets.push_back(Facet3{{{at(i, j), at(i + 1, j + 1), at(i, j + 1)}}, 0});
+    }
+  return plc;
+}
+
+}  // namespace pqmesh::test
