@@ -847,10 +847,12 @@ def gen_bad():
     bad("bad/non_planar_facet.smesh", "non-planar-facet", info["facet_line"][1], "2",
         "top facet of a cube with one corner raised")
 
-    # open-boundary: the cube without its top facet; the 4 open edges are 5-6, 6-7, 7-8, 8-5, so
-    # the named vertices include 5, 6, 7, 8.
+    # open-boundary: the cube without its top facet; the 4 open edges 5-6, 6-7, 7-8, 8-5 lie on the
+    # side facets only, which are file facets 2..5 (bottom 1, then y=0, x=1, y=1, x=0). Edges have
+    # no id in any file format, so edge errors name the facets on the edge (in file numbering).
     write_tetgen_poly("bad/open_boundary.poly", "cube without its top facet", v, f[:1] + f[2:])
-    bad("bad/open_boundary.poly", "open-boundary", 0, "5,6,7,8", "cube missing its top face (open edges 5-6 6-7 7-8 8-5)")
+    bad("bad/open_boundary.poly", "open-boundary", 0, "2,3,4,5",
+        "cube missing its top face (open edges 5-6 6-7 7-8 8-5 on facets 2..5)")
 
     # non-manifold-edge: cubes [0,1]^3 and [1,2] x [1,2] x [0,1] share the edge 3-7 (x=1, y=1,
     # z in [0,1]), which lies on 4 facets. Vertices 3 and 7 keep connected links (two fans joined
@@ -861,8 +863,11 @@ def gen_bad():
     vv = list(v) + [tuple(F(c) for c in p) for p in extra]
     idx = {tuple(F(c) for c in p): i for i, p in enumerate(vv)}
     g = f + [facet([[idx[tuple(F(c) for c in v2[i])] for i in x["loops"][0]]], x["marker"]) for x in f2]
+    # The edge is named by its 4 facets: the first cube's x=1 and y=1 facets (file 4, 5) and the
+    # second cube's y=1 and x=1 facets, its y=lo and x=lo sides (file 6 + 3 = 9 and 6 + 6 = 12).
     write_tetgen_poly("bad/non_manifold_edge.poly", "two cubes sharing the edge 3-7", vv, g)
-    bad("bad/non_manifold_edge.poly", "non-manifold-edge", 0, "3,7", "two cubes sharing one edge (4 facets on edge 3-7)")
+    bad("bad/non_manifold_edge.poly", "non-manifold-edge", 0, "4,5,9,12",
+        "two cubes sharing one edge (edge 3-7 on facets 4, 5, 9, 12)")
 
     # pinched-vertex: cubes [0,1]^3 and [1,2]^3 share only vertex 7 = (1,1,1). Every edge is on two
     # facets; the link of 7 is two disjoint cycles. Line: vertex 7's line.
@@ -950,11 +955,14 @@ def gen_bad():
     sq = [(F(0), F(0)), (F(1), F(0)), (F(1), F(1)), (F(0), F(1))]
 
     # self-crossing: loop a b c d = (0,0) (2,1) (2,0) (0,2); segment 1 (a-b) crosses segment 3
-    # (c-d) at (4/3, 2/3). Every vertex is on two segments; the lobes have areas 4/3 and 1/3.
+    # (c-d) at (4/3, 2/3). Every vertex is on two segments (so the segments do form a loop); the
+    # lobes have areas 4/3 and 1/3. The 2D domain is one planar polygon crossing itself, which is
+    # what SelfIntersectingFacet means ("a facet polygon crosses itself", errors.hpp);
+    # InvalidPolygon is for segments that do not form loops (dangling, branching).
     w = [(F(0), F(0)), (F(2), F(1)), (F(2), F(0)), (F(0), F(2))]
     ww, s = loops_to_pslg([w])
     write_triangle_poly("bad/2d_self_crossing.poly", "bow-tie: segment 1 crosses segment 3", ww, s)
-    bad("bad/2d_self_crossing.poly", "invalid-polygon", 0, "1,3", "bow-tie loop: segments 1 and 3 cross")
+    bad("bad/2d_self_crossing.poly", "self-intersecting-facet", 0, "1,3", "bow-tie loop: segments 1 and 3 cross")
 
     # dangling segment: unit square (vertices 1..4, segments 1..4) plus vertex 5 = (1/2,1/4) and
     # segment 5 = 1-5 (vertex 5 on one segment, vertex 1 on three). Vertex 5 and segment 5 share
@@ -1021,7 +1029,7 @@ Tab separated, one header row. Columns:
 | file | path relative to `data/` (`bad/does_not_exist.poly` is deliberately absent) |
 | error | the `ErrorCode` name as `to_string()` spells it |
 | line | expected 1-based file line of the error; `0` when no single line is meaningful (end of file, an edge or a pair of entities) and not checked |
-| ids | comma-separated ids, in the file's own numbering, that the error must name (it may name more); `-` when not checked. For edges the ids are the edge's vertex ids. |
+| ids | comma-separated ids, in the file's own numbering, that the error must name (it may name more); `-` when not checked. Edges have no id in any format, so errors about an edge (open, non-manifold) name the facets on it. |
 
 The reasoning behind each expectation (which entity is at fault and why no other check fires
 first) is written next to the code that builds the file in `generate_corpus.py`.

@@ -112,7 +112,10 @@ struct CheckReport {
   std::string to_text() const;
 };
 
-// Full check against the validated input domain.
+// Full check against the validated input domain (as make_domain returns it).
+// Mesh problems are reported, never thrown; a Domain2/Domain3 that is itself
+// inconsistent (a loop side that is no input segment, a facet side missing
+// from Domain3::edges) throws DomainError.
 CheckReport check_mesh(const TriMesh2& mesh, const Domain2& domain, const CheckOptions& options = {});
 CheckReport check_mesh(const TetMesh3& mesh, const Domain3& domain, const CheckOptions& options = {});
 

@@ -2,8 +2,9 @@
 // Writing and reading output meshes (TriMesh2, TetMesh3) in the formats that
 // downstream tools read: VTK XML unstructured grid (.vtu), Gmsh MSH 4.1 and
 // 2.2 (.msh), Medit (.mesh), Triangle/TetGen (.node/.ele/.poly or .face), and
-// an SVG picture of a 2D mesh (write only). docs/FORMATS.md describes the
-// exact layout of every file; the rules that matter to callers are here.
+// an SVG picture of a 2D mesh (write only). The head comment of each
+// src/io/mesh_<format>.cpp gives the exact layout written; the rules that
+// matter to callers are here.
 //
 // Writers
 //   - are atomic: everything is written to "<path>.tmp-<pid>" and renamed onto
@@ -20,7 +21,9 @@
 //
 // Markers
 //   Element markers (regions), boundary edge/face markers and vertex markers
-//   are written where the format can hold them; see docs/FORMATS.md. Formats
+//   are written where the format can hold them (Vtu: element and vertex
+//   markers; Msh: all three, vertex markers as $NodeData "vertex_marker";
+//   Medit and TetGen/Triangle: all three). Formats
 //   that need a marker on every element (Gmsh, Medit) write 0 for missing
 //   markers, and every reader returns an EMPTY marker vector when all markers
 //   of a kind are 0, so "no markers" and "all markers 0" are the same thing.
@@ -32,11 +35,10 @@
 //
 // Readers
 //   throw ParseError naming the file and line for anything malformed, and
-//   return elements in pqmesh's orientation: an element read with negative
-//   orientation (exact orient2d/orient3d) is reversed by swapping its second
-//   and third vertices; degenerate (zero) elements are kept as read for the
-//   validity checker to report. Reading takes every external convention into
-//   account, e.g. the TetGen .ele orientation differs between TetGen versions.
+//   translate each format's own conventions into pqmesh's (TetGen's inward
+//   .face normals are reversed). Elements keep the vertex order of the file:
+//   a negatively oriented or degenerate element is the validity checker's to
+//   report (pqmesh check), so readers never repair orientation.
 #include <optional>
 #include <string>
 #include <vector>

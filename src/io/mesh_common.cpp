@@ -83,11 +83,9 @@ TriMesh2 to_trimesh(RawMesh&& raw, const std::string& path) {
   }
   mesh.triangles.resize(raw.cells.size() / 3);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    std::array<int, 3> tri{raw.cells[3 * t], raw.cells[3 * t + 1], raw.cells[3 * t + 2]};
-    // Reverse clockwise triangles so that orient2d > 0 (pqmesh/mesh.hpp).
-    if (orient2d(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) == Sign::Negative)
-      std::swap(tri[1], tri[2]);
-    mesh.triangles[t] = tri;
+    // Kept in file order, never reoriented: a wrongly oriented element is the
+    // checker's to report (pqmesh check), not the reader's to hide.
+    mesh.triangles[t] = {raw.cells[3 * t], raw.cells[3 * t + 1], raw.cells[3 * t + 2]};
   }
   mesh.edges.resize(raw.faces.size() / 2);
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) mesh.edges[e] = {raw.faces[2 * e], raw.faces[2 * e + 1]};
@@ -107,12 +105,8 @@ TetMesh3 to_tetmesh(RawMesh&& raw, const std::string& /*path*/) {
   for (std::size_t i = 0; i < nv; ++i) mesh.vertices[i] = {raw.xyz[3 * i], raw.xyz[3 * i + 1], raw.xyz[3 * i + 2]};
   mesh.tetrahedra.resize(raw.cells.size() / 4);
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-    std::array<int, 4> tet{raw.cells[4 * t], raw.cells[4 * t + 1], raw.cells[4 * t + 2], raw.cells[4 * t + 3]};
-    // Reverse negatively oriented tetrahedra so that orient3d > 0 (pqmesh/mesh.hpp).
-    if (orient3d(mesh.vertices[tet[0]], mesh.vertices[tet[1]], mesh.vertices[tet[2]], mesh.vertices[tet[3]]) ==
-        Sign::Negative)
-      std::swap(tet[1], tet[2]);
-    mesh.tetrahedra[t] = tet;
+    // Kept in file order, never reoriented (see to_trimesh).
+    mesh.tetrahedra[t] = {raw.cells[4 * t], raw.cells[4 * t + 1], raw.cells[4 * t + 2], raw.cells[4 * t + 3]};
   }
   mesh.faces.resize(raw.faces.size() / 3);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)

@@ -3,7 +3,7 @@
 //   Dimension 3: Vertices (x y z ref), Tetrahedra (a b c d ref),
 //                Triangles (boundary faces, a b c ref)
 // 1-based vertex numbers; a missing marker is written as ref 0. Tetrahedra
-// keep pqmesh's positive orientation (the reader reorients in any case).
+// keep pqmesh's positive orientation; the reader keeps the file's order.
 #include <string>
 #include <vector>
 

@@ -14,8 +14,8 @@
 // negative, i.e. unless det(v1-v0, v2-v0, v3-v0) > 0: pqmesh's (and VTK's)
 // positive orientation, which the writer uses; older development versions
 // swapped the first two vertices on output ("so that Orient3D() > 0", the
-// opposite). The reader therefore orients every tetrahedron by the exact sign
-// (mesh_common.cpp). TetGen's .face lists boundary triangles so that the
+// opposite). We follow 1.5/1.6, the version Debian ships; the reader keeps the
+// file's order (an inverted tetrahedron is for the checker to report). TetGen's .face lists boundary triangles so that the
 // right-hand normal points INTO the volume (comment of outsubfaces() in
 // tetgen.cxx), the opposite of pqmesh: the writer writes (a, c, b) and the
 // reader reverses back.

@@ -22,9 +22,11 @@ Plc3 read_off(const std::string& path, const ReadOptions& options, ReadReport& r
       src.fail(ErrorCode::Unsupported, "OFF variant '" + head + "' (only 3D OFF is read)", record.line);
     if (record.tokens.size() > 1 && record.tokens[1] == "BINARY")
       src.fail(ErrorCode::Unsupported, "binary OFF", record.line);
-    first_count = 1;
-    if (record.tokens.size() == 1 && !src.next_record(record)) src.fail_truncated("the OFF counts");
-    else if (record.tokens.size() == 1) first_count = 0;
+    if (record.tokens.size() > 1) {
+      first_count = 1;  // counts on the header line
+    } else if (!src.next_record(record)) {
+      src.fail_truncated("the OFF counts");
+    }
   }
   if (record.tokens.size() < first_count + 2)
     src.fail(ErrorCode::Syntax, "expected the counts 'vertices faces [edges]'", record.line);

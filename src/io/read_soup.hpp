@@ -21,7 +21,9 @@ struct SoupFile {
 // Vertices that input polygons used but that no merged facet loop uses (they
 // lay strictly inside a merged facet) are dropped and the rest renumbered in
 // their original order; vertex_line and vertex_markers follow. A merged
-// facet's element_line is the line of its first polygon.
+// facet's element_line is the line of its first polygon. With
+// options.merge_coplanar false every polygon is its own facet and
+// merge_angle_degrees is ignored.
 Plc3 soup_to_plc(SoupFile&& file, const ReadOptions& options, ReadReport& report);
 
 }  // namespace pqmesh::detail

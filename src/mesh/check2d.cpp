@@ -44,6 +44,7 @@
 #include "mesh/check_common.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
@@ -101,8 +102,8 @@ class Checker2 {
       sink_.add(CheckKind::Volume, {},
                 "total area " + detail::format_number(rep_.mesh_volume) + " differs from the domain's " +
                     detail::format_number(d.area) + " (relative difference " +
-                    detail::format_number(detail::relative_difference(rep_.mesh_volume, d.area)) + " > tolerance " +
-                    detail::format_number(opt_.volume_tolerance) + "; a floating-point measurement)");
+                    detail::format_short(detail::relative_difference(rep_.mesh_volume, d.area)) + " > tolerance " +
+                    detail::format_short(opt_.volume_tolerance) + "; a floating-point measurement)");
     }
     if (opt_.locate_vertices) check_located(d);
   }
@@ -166,13 +167,13 @@ class Checker2 {
   }
 
   void measure_area() {
-    double sum = 0;
+    detail::CompensatedSum sum;
     for (const auto& q : m_.triangles) {
       const Vec2 a = m_.vertices[q[0]];
-      sum += cross(m_.vertices[q[1]] - a, m_.vertices[q[2]] - a) / 2.0;
+      sum.add(cross(m_.vertices[q[1]] - a, m_.vertices[q[2]] - a) / 2.0);
     }
     rep_.volume_measured = true;
-    rep_.mesh_volume = sum;
+    rep_.mesh_volume = sum.value();
   }
 
   // ---- stage 3 -------------------------------------------------------------
@@ -485,11 +486,11 @@ class Checker2 {
         const int u = loop[k], v = loop[(k + 1) % n];
         const std::array<int, 3> key{std::min(u, v), std::max(u, v), -1};
         auto it = std::lower_bound(seg_index.begin(), seg_index.end(), key);
-        if (it == seg_index.end() || (*it)[0] != key[0] || (*it)[1] != key[1]) {
-          sink_.note("loop side (" + std::to_string(u) + " " + std::to_string(v) +
-                     ") is not an input segment; boundary not compared with the domain");
-          return;
-        }
+        if (it == seg_index.end() || (*it)[0] != key[0] || (*it)[1] != key[1])
+          throw DomainError(ErrorCode::InvalidPolygon,
+                            "inconsistent Domain2: loop side (" + std::to_string(u) + " " + std::to_string(v) +
+                                ") is not an input segment (build domains with make_domain)",
+                            {u, v});
         const int s = (*it)[2];
         if (!segment_ok_[s]) {
           sink_.note("boundary not compared with the domain: input segment " + std::to_string(s) + " is missing");
@@ -560,6 +561,10 @@ class Checker2 {
   }
 
   void check_located(const Domain2& d) {
+    if (d.loops.empty()) {
+      sink_.note("vertex location skipped: the domain has no loops (not built by make_domain?)");
+      return;
+    }
     for (std::size_t v = 0; v < m_.vertices.size(); ++v)
       if (locate(d, m_.vertices[v]) == Location::Outside)
         sink_.add(CheckKind::VertexOutside, {static_cast<std::int64_t>(v)},

@@ -25,10 +25,13 @@
 //
 // Stage 4 (with the domain P, facets oriented outward):
 //   (a) every triangle of B is assigned to a facet f: exactly coplanar with f
-//       (orient3d = 0 against three non-collinear vertices of f) with its three
-//       vertices in the closed facet polygon (exact crossing test in the
+//       (orient3d = 0 against three non-collinear vertices of f), within f's
+//       bounding box, and, only when several coplanar facets qualify, with its
+//       three vertices in the closed facet polygon (exact crossing test in the
 //       projection that drops the dominant axis of f's normal). Its
 //       orientation must agree with f's (exact, in the same projection).
+//       Exactness means that a vertex constructed in double near a slanted
+//       facet, but not exactly in its plane, makes its triangles fail here.
 //   (b) every input edge (DomainEdge) is walked from its first to its second
 //       vertex along edges of B, each step to the unique B-neighbour lying on
 //       the edge strictly closer to the end (collinear by three projected
@@ -77,6 +80,7 @@
 #include "plc/point_location.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
@@ -234,8 +238,8 @@ class Checker3 {
       sink_.add(CheckKind::Volume, {},
                 "total volume " + detail::format_number(rep_.mesh_volume) + " differs from the domain's " +
                     detail::format_number(d.volume) + " (relative difference " +
-                    detail::format_number(detail::relative_difference(rep_.mesh_volume, d.volume)) +
-                    " > tolerance " + detail::format_number(opt_.volume_tolerance) + "; a floating-point measurement)");
+                    detail::format_short(detail::relative_difference(rep_.mesh_volume, d.volume)) +
+                    " > tolerance " + detail::format_short(opt_.volume_tolerance) + "; a floating-point measurement)");
     }
     if (opt_.locate_vertices) check_located(d);
   }
@@ -300,13 +304,13 @@ class Checker3 {
   }
 
   void measure_volume() {
-    double sum = 0;
+    detail::CompensatedSum sum;
     for (const auto& q : m_.tetrahedra) {
       const Vec3 a = m_.vertices[q[0]];
-      sum += dot(m_.vertices[q[1]] - a, cross(m_.vertices[q[2]] - a, m_.vertices[q[3]] - a)) / 6.0;
+      sum.add(dot(m_.vertices[q[1]] - a, cross(m_.vertices[q[2]] - a, m_.vertices[q[3]] - a)) / 6.0);
     }
     rep_.volume_measured = true;
-    rep_.mesh_volume = sum;
+    rep_.mesh_volume = sum.value();
   }
 
   // ---- stage 3 -------------------------------------------------------------
@@ -689,22 +693,43 @@ class Checker3 {
     for (std::size_t i = 0; i < nb; ++i) {
       const auto& t = faces_.boundary[i];
       const Vec3 a = m_.vertices[t[0]], b = m_.vertices[t[1]], c = m_.vertices[t[2]];
+      // Candidates: facets whose box holds the triangle and whose plane holds
+      // its vertices (exact). One candidate is taken as is; containment in
+      // the facet is then enforced by (c), since a triangle assigned to f with
+      // f's orientation but not inside f would leave B_f != f. Only between
+      // several coplanar candidates does the exact point-in-polygon test
+      // choose (the lowest-numbered facet whose closure holds all three).
+      int first = -1, candidates = 0;
       for (int f : grid.at(a)) {
         const FacetPlane& fp = planes_[f];
         if (!in_box(a, fp.lo, fp.hi) || !in_box(b, fp.lo, fp.hi) || !in_box(c, fp.lo, fp.hi)) continue;
         if (orient3d(fp.p0, fp.p1, fp.p2, a) != Sign::Zero || orient3d(fp.p0, fp.p1, fp.p2, b) != Sign::Zero ||
             orient3d(fp.p0, fp.p1, fp.p2, c) != Sign::Zero)
           continue;
-        if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c)) continue;
-        assigned_[i] = f;
-        break;
+        if (candidates++ == 0) first = f;
+      }
+      if (candidates == 1) {
+        assigned_[i] = first;
+      } else if (candidates > 1) {
+        for (int f : grid.at(a)) {
+          if (f < first) continue;
+          const FacetPlane& fp = planes_[f];
+          if (!in_box(a, fp.lo, fp.hi) || !in_box(b, fp.lo, fp.hi) || !in_box(c, fp.lo, fp.hi)) continue;
+          if (orient3d(fp.p0, fp.p1, fp.p2, a) != Sign::Zero || orient3d(fp.p0, fp.p1, fp.p2, b) != Sign::Zero ||
+              orient3d(fp.p0, fp.p1, fp.p2, c) != Sign::Zero)
+            continue;
+          if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c)) continue;
+          assigned_[i] = f;
+          break;
+        }
       }
       const int tet = faces_.boundary_tet[i];
       if (assigned_[i] < 0) {
         sink_.add(CheckKind::BoundaryFace, {t[0], t[1], t[2]},
                   "boundary triangle (" + format_ids(t) + ") of tetrahedron " + std::to_string(tet) + " at " +
                       format_point(a) + " " + format_point(b) + " " + format_point(c) +
-                      " is not contained in any domain facet");
+                      " is not contained in any domain facet (an exact test: a vertex only approximately in a"
+                      " facet's plane fails it)");
         continue;
       }
       const FacetPlane& fp = planes_[assigned_[i]];
@@ -812,12 +837,12 @@ class Checker3 {
           auto it = std::lower_bound(d.edges.begin(), d.edges.end(), key, [](const DomainEdge& x, const DomainEdge& y) {
             return x.a != y.a ? x.a < y.a : x.b < y.b;
           });
-          if (it == d.edges.end() || it->a != key.a || it->b != key.b) {
-            ok = false;
-            sink_.note("facet " + std::to_string(f) + " side (" + std::to_string(u) + " " + std::to_string(v) +
-                       ") is not in Domain3::edges; facet not checked");
-            break;
-          }
+          if (it == d.edges.end() || it->a != key.a || it->b != key.b)
+            throw DomainError(ErrorCode::OpenBoundary,
+                              "inconsistent Domain3: side (" + std::to_string(u) + " " + std::to_string(v) +
+                                  ") of facet " + std::to_string(f) +
+                                  " is not in Domain3::edges (build domains with make_domain)",
+                              {static_cast<std::int64_t>(f)});
           const auto e = static_cast<std::size_t>(it - d.edges.begin());
           if (!edge_ok_[e]) {
             ok = false;
@@ -896,6 +921,10 @@ class Checker3 {
   // The public locate(Domain3, p) scans every facet triangle; the plc
   // module's indexed locator answers the same exact question per vertex fast.
   void check_located(const Domain3& d) {
+    if (d.facet_triangles.empty()) {
+      sink_.note("vertex location skipped: the domain has no facet triangles (not built by make_domain?)");
+      return;
+    }
     const detail::DomainLocator3 locator(d);
     for (std::size_t v = 0; v < m_.vertices.size(); ++v)
       if (locator.locate(m_.vertices[v]) == Location::Outside)

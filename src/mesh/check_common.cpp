@@ -51,6 +51,12 @@ std::string format_number(double v) {
 
 // (Built with append: GCC 12 warns falsely (-Wrestrict) on chains of
 // operator+ that start with a string literal.)
+std::string format_short(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 std::string format_point(Vec2 p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);

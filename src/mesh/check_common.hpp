@@ -2,6 +2,7 @@
 // Pieces shared by the 2D and 3D validity checkers (check2d.cpp, check3d.cpp).
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -77,7 +78,26 @@ int find_vertex(const std::vector<V>& points, const std::vector<int>& order, con
 std::string format_point(Vec2 p);
 std::string format_point(Vec3 p);
 std::string format_ids(std::span<const int> ids);
-std::string format_number(double v);
+std::string format_number(double v);  // round-trip precision
+std::string format_short(double v);   // 3 significant digits
+
+// Neumaier's compensated summation (a measurement: keeps the rounding of a
+// sum of many element volumes near one unit in the last place).
+class CompensatedSum {
+ public:
+  void add(double x) {
+    const double t = sum_ + x;
+    if (std::abs(sum_) >= std::abs(x))
+      c_ += (sum_ - t) + x;
+    else
+      c_ += (x - t) + sum_;
+    sum_ = t;
+  }
+  double value() const { return sum_ + c_; }
+
+ private:
+  double sum_ = 0, c_ = 0;
+};
 
 // Relative difference |a - b| / max(|a|, |b|), 0 when both are 0.
 double relative_difference(double a, double b);

@@ -167,6 +167,7 @@ class Merger {
     for (int p = 0; p < np; ++p)
       for (int s = soup_.offsets[p]; s < soup_.offsets[p + 1]; ++s) slot_poly_[s] = p;
     neighbour_ = edge_neighbours(soup_, slot_poly_);
+    position_.assign(soup_.vertices.size(), -1);
     info_.resize(static_cast<std::size_t>(np));
     std::vector<int> scratch;
     for (int p = 0; p < np; ++p) info_[p] = polygon_info(soup_, p, scratch);
@@ -242,6 +243,28 @@ class Merger {
     return s * orient2d_projected(V[v], V[w1], V[w2], drop) == Sign::Positive;
   }
 
+  // Splits a closed walk that may pass a vertex several times into simple
+  // cycles: whenever the walk returns to a vertex still on the stack, the part
+  // since that visit is a closed cycle of its own. At a vertex where the
+  // facet's boundary touches itself this separates, for example, a hole loop
+  // from the outer loop it touches, whichever way the chaining turned there.
+  void split_closed_walk(const std::vector<int>& walk, std::vector<std::vector<int>>& loops) const {
+    std::vector<int> stack;
+    for (int v : walk) {
+      const int at = position_[v];
+      if (at < 0) {
+        position_[v] = static_cast<int>(stack.size());
+        stack.push_back(v);
+        continue;
+      }
+      loops.emplace_back(stack.begin() + at, stack.end());
+      for (std::size_t i = static_cast<std::size_t>(at) + 1; i < stack.size(); ++i) position_[stack[i]] = -1;
+      stack.resize(static_cast<std::size_t>(at) + 1);
+    }
+    for (int v : stack) position_[v] = -1;
+    loops.push_back(std::move(stack));
+  }
+
   // Boundary loops of the polygons `members` (all with label_ == label).
   // Returns false when they do not form one outer loop plus simple hole loops.
   bool build_loops(const int* members, int count, int drop, Sign facing, std::vector<std::vector<int>>& loops) const {
@@ -285,14 +308,15 @@ class Merger {
         if (candidates.empty()) return false;  // open chain
         int best = candidates[0];
         // Sharpest turn towards the interior (largest counter-clockwise angle
-        // from the way back): where loops touch at t, this keeps them apart.
+        // from the way back): where two pieces of the facet touch at t, this
+        // keeps their loops apart; split_closed_walk handles the other case.
         for (std::size_t c = 1; c < candidates.size(); ++c)
           if (smaller_turn(t, edges[cur].from, edges[best].to, edges[candidates[c]].to, drop, facing))
             best = candidates[c];
         if (best == start) break;
         cur = best;
       }
-      loops.push_back(std::move(loop));
+      split_closed_walk(loop, loops);
     }
     int outer = -1;
     std::vector<int> sorted;
@@ -502,6 +526,7 @@ class Merger {
   std::vector<int> slot_poly_, neighbour_;
   std::vector<PolyInfo> info_;
   std::vector<int> group_, label_;
+  mutable std::vector<int> position_;  // scratch for split_closed_walk, all -1 between calls
   int n_groups_ = 0;
   Lists members_;
   std::vector<Item> items_;

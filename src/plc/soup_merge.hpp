@@ -13,7 +13,9 @@
 //  * Each group becomes one Facet3: boundary edges (edges not shared with a
 //    neighbour inside the group) are chained into loops; at a vertex where the
 //    boundary touches itself the chain takes the sharpest turn towards the
-//    facet interior, which separates loops that touch at a vertex. The unique
+//    facet interior (which separates two pieces touching at a vertex), and a
+//    closed walk that still passes a vertex twice (a hole touching the outer
+//    boundary) is split there into simple cycles. The unique
 //    loop turning the same way as the polygons is loops[0]; the others (turning
 //    the other way) are holes. Loops keep the polygons' orientation. When this
 //    fails (a loop repeats a vertex, no or several outer loops, an open chain),

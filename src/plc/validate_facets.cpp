@@ -105,7 +105,8 @@ std::vector<FacetPlane> check_facets(Plc3& plc) {
     int off = -1;
     for (const auto& loop : plc.facets[f].loops)
       for (int v : loop)
-        if (off < 0 && orient3d(verts[a], verts[b], verts[c], verts[v]) != Sign::Zero) off = v;
+        if (off < 0 && v != a && v != b && v != c && orient3d(verts[a], verts[b], verts[c], verts[v]) != Sign::Zero)
+          off = v;
     if (off >= 0) {
       if (bad.empty()) detail << "facet " << file_id(src, f) << " is not planar: vertex " << file_id(src, off)
                               << " is off the plane of vertices " << file_id(src, a) << ", " << file_id(src, b)
@@ -123,6 +124,13 @@ std::vector<FacetPlane> check_facets(Plc3& plc) {
   std::vector<std::string> reasons;
   for (int f = 0; f < nf; ++f) {
     Facet3& facet = plc.facets[f];
+    if (facet.loops.size() == 1 && facet.loops[0].size() == 3) {
+      // A triangle of three distinct, non-collinear vertices is simple (the
+      // common case for triangle soups): only its turn is needed.
+      const auto& l = facet.loops[0];
+      planes[f].outer_turn = orient2d_projected(verts[l[0]], verts[l[1]], verts[l[2]], planes[f].drop);
+      continue;
+    }
     const ProjectedFacet pf = project_facet(verts, facet, planes[f].drop);
     if (loops_conflict(pf)) {
       bad.push_back(f);

@@ -68,10 +68,11 @@ void check_intersections(const Plc3& plc, const std::vector<DomainEdge>& edges, 
         return true;  // the same triangle in two facets
     }
   };
-  surface.grid().for_each_overlapping_pair([&](int s, int t) {
+  // Pairs within one facet are skipped (stage 5 covered them); ft.owner is
+  // nondecreasing since facets are triangulated in order.
+  surface.grid().for_each_overlapping_pair(ft.owner, [&](int s, int t) {
     if (conflicts.size() >= kCap) return;
     const int f = ft.owner[s], g = ft.owner[t];
-    if (f == g) return;  // within a facet: stage 5
     if (conflicting(s, t)) conflicts.push_back({std::min(f, g), std::max(f, g)});
   });
   if (conflicts.empty()) return;

@@ -63,18 +63,31 @@ struct BoxKey {
 
 namespace detail {
 
-// Deterministic 64-bit hash of a key (splitmix64 finaliser over the fields).
+// Hash of a key for the flat index (key_index.hpp). `pos` picks the home slot: the
+// eight (four) children of one cell share the mixed part and differ by their child
+// index, so siblings land in neighbouring slots and a neighbour query touches few
+// cache lines. `tag` is a 32-bit filter that also separates siblings. Deterministic.
+struct KeyHash {
+  std::uint64_t pos = 0;
+  std::uint32_t tag = 0;
+};
+
 template <int D>
-std::uint64_t hash_key(const BoxKey<D>& k) {
-  auto mix = [](std::uint64_t x) {
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-  };
-  std::uint64_t h = mix(static_cast<std::uint64_t>(k.level));
-  for (int a = 0; a < D; ++a) h = mix(h ^ static_cast<std::uint64_t>(k.q[a]));
-  return h;
+KeyHash hash_key(const BoxKey<D>& k) {
+  // Polynomial over (level, q >> 2, q & 1) with odd multipliers, then one splitmix64
+  // finaliser. q >> 2 is the parent cell (for aligned keys), bit 1 of q the child
+  // index, bit 0 marks unaligned (merged) origins.
+  std::uint64_t x = static_cast<std::uint64_t>(k.level) + 1;
+  unsigned sub = 0;
+  for (int a = 0; a < D; ++a) {
+    x = x * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(k.q[a] >> 2);
+    x = x * 0xD6E8FEB86659FD93ull + static_cast<std::uint64_t>(k.q[a] & 1);
+    sub |= static_cast<unsigned>((k.q[a] >> 1) & 1) << a;
+  }
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  x ^= x >> 31;
+  return KeyHash{x + sub, static_cast<std::uint32_t>(x >> 32) ^ (sub * 0x9E3779B9u)};
 }
 
 // z-order ("Morton") comparison of two box origins, with axis 0 the least

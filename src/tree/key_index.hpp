@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "tree/key.hpp"
+
 namespace pqmesh::detail {
 
 class KeyIndex {
@@ -18,10 +20,10 @@ class KeyIndex {
 
   // Node id stored for a key with hash h for which same(id) holds, or -1.
   template <class Same>
-  std::int32_t find(std::uint64_t h, Same&& same) const {
+  std::int32_t find(KeyHash h, Same&& same) const {
     const std::uint64_t mask = slots_.size() - 1;
-    const auto tag = static_cast<std::uint32_t>(h >> 32);
-    for (std::uint64_t i = h & mask;; i = (i + 1) & mask) {
+    const std::uint32_t tag = h.tag;
+    for (std::uint64_t i = h.pos & mask;; i = (i + 1) & mask) {
       const Slot& s = slots_[i];
       if (s.node < 0) return -1;
       if (s.tag == tag && same(s.node)) return s.node;
@@ -31,7 +33,7 @@ class KeyIndex {
   // Adds node `id` for a key with hash h that is not yet in the index. `hash_of(id)`
   // recomputes the hash of a stored node's key when the table grows.
   template <class HashOf>
-  void insert(std::uint64_t h, std::int32_t id, HashOf&& hash_of) {
+  void insert(KeyHash h, std::int32_t id, HashOf&& hash_of) {
     if ((count_ + 1) * 10 > slots_.size() * 7) grow(hash_of);
     place(h, id);
     ++count_;
@@ -39,17 +41,23 @@ class KeyIndex {
 
   std::size_t size() const { return count_; }
 
+  // Grows the table now so that n keys fit without further growth; never shrinks.
+  template <class HashOf>
+  void reserve(std::size_t n, HashOf&& hash_of) {
+    while (n * 10 > slots_.size() * 7) grow(hash_of);
+  }
+
  private:
   struct Slot {
     std::uint32_t tag = 0;
     std::int32_t node = -1;
   };
 
-  void place(std::uint64_t h, std::int32_t id) {
+  void place(KeyHash h, std::int32_t id) {
     const std::uint64_t mask = slots_.size() - 1;
-    std::uint64_t i = h & mask;
+    std::uint64_t i = h.pos & mask;
     while (slots_[i].node >= 0) i = (i + 1) & mask;
-    slots_[i] = Slot{static_cast<std::uint32_t>(h >> 32), id};
+    slots_[i] = Slot{h.tag, id};
   }
 
   template <class HashOf>

@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "pqmesh/errors.hpp"
+#include "tree/chunked_vector.hpp"
 #include "tree/key.hpp"
 #include "tree/key_index.hpp"
 #include "tree/root_cube.hpp"
@@ -89,10 +90,15 @@ class Tree {
   const RootCube<D>& root() const { return root_; }
   std::int32_t size() const { return static_cast<std::int32_t>(nodes_.size()); }  // ids are 0..size()-1
   std::int32_t leaf_count() const { return leaf_count_; }  // nodes in state Leaf
+  // Capacity hint: room for `nodes` nodes without reallocation.
+  void reserve(std::int32_t nodes) {
+    nodes_.reserve(static_cast<std::size_t>(nodes));
+    index_.reserve(static_cast<std::size_t>(nodes), [&](std::int32_t x) { return detail::hash_key(at(x).key); });
+  }
   // Deepest level split() may create: box planes stay exact doubles down to it.
   std::int32_t max_level() const { return max_level_; }
 
-  // ---- per node
+  // ---- per node (references returned here stay valid while the tree grows)
   const Key& key(std::int32_t n) const { return node(n).key; }
   std::int32_t level(std::int32_t n) const { return node(n).key.level; }
   BoxState state(std::int32_t n) const { return node(n).state; }
@@ -168,6 +174,11 @@ class Tree {
   }
 
   // ---- balance (thesis §4.1.1 balance condition)
+  // Assumption on `adjacent`: if (big, small) is not balance-adjacent, then neither
+  // is (c, small) for a box c created later by splitting big (a child, or a
+  // duplicate of a child, made by the hook for a component of (P ∧ big) ∩ child).
+  // The thesis' definition has this property (P ∧ c ⊂ P ∧ big, ex(c) ⊂ ex(big));
+  // without it a leaf already processed is not re-examined against new boxes.
   // Worklist balancing. Each seed (and every leaf created on the way) is checked
   // against its larger neighbours; a neighbour `big` more than twice the size of a
   // leaf `small` (level(big) < level(small) - 1) is split when it is not protected,
@@ -203,6 +214,7 @@ class Tree {
     std::int32_t parent = -1;
     std::int32_t first_child = -1;
     std::int32_t next_same = -1;
+    std::int32_t head = -1;  // first node with the same key (carries the key flags)
     std::int32_t absorbed_into = -1;
     std::int32_t component = 0;
     std::int32_t payload = -1;
@@ -249,7 +261,8 @@ class Tree {
   int root_exp_ = 0;             // S = 2^root_exp_
   std::int32_t max_level_ = 0;
   std::int32_t leaf_count_ = 0;
-  std::vector<Node> nodes_;
+  std::int32_t merged_count_ = 0;  // merge() calls so far
+  detail::ChunkedVector<Node> nodes_;
   detail::KeyIndex index_;
 };
 

@@ -71,20 +71,20 @@ TEST(TetgenFile, FacesReversedElementsNot) {
   std::filesystem::remove_all(dir);
 }
 
-// A clockwise triangle and a negative tetrahedron in a file come back
-// reoriented (second and third vertex swapped).
-TEST(Readers, ReorientElements) {
+// A clockwise triangle and a negative tetrahedron in a file come back in the
+// file's vertex order: readers never hide an orientation error from the checker.
+TEST(Readers, KeepFileOrientation) {
   const auto dir = test::scratch_dir("reorient");
   spit(dir / "t.node", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n");
   spit(dir / "t.ele", "1 3 0\n1 1 3 2\n");
   const TriMesh2 tri = read_trimesh((dir / "t.node").string());
   ASSERT_EQ(tri.triangles.size(), 1u);
-  EXPECT_EQ(tri.triangles[0], (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(tri.triangles[0], (std::array<int, 3>{0, 2, 1}));
   spit(dir / "k.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");  // 0-based
   spit(dir / "k.ele", "1 4 0\n0 0 2 1 3\n");
   const TetMesh3 tet = read_tetmesh((dir / "k.ele").string());
   ASSERT_EQ(tet.tetrahedra.size(), 1u);
-  EXPECT_EQ(tet.tetrahedra[0], (std::array<int, 4>{0, 1, 2, 3}));
+  EXPECT_EQ(tet.tetrahedra[0], (std::array<int, 4>{0, 2, 1, 3}));
   std::filesystem::remove_all(dir);
 }
 

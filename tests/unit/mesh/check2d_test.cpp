@@ -6,6 +6,7 @@
 
 #include "check_fixtures.hpp"
 #include "pqmesh/check.hpp"
+#include "pqmesh/errors.hpp"
 
 namespace pqmesh {
 namespace {
@@ -248,6 +249,12 @@ TEST(Check2d, DuplicateVertexCoordinates) {
   EXPECT_TRUE(dup) << r.to_text();
 }
 
+TEST(Check2d, InconsistentDomainThrows) {
+  Domain2 d = unit_square();
+  d.pslg.segments.pop_back();  // the loop side (3 0) is no longer a segment
+  EXPECT_THROW(check_mesh(square2(), d), DomainError);
+}
+
 TEST(Check2d, IssueCapCountsEverything) {
   // 10 clockwise triangles, cap 3: 3 stored, 10 counted.
   TriMesh2 m;
@@ -264,6 +271,29 @@ TEST(Check2d, IssueCapCountsEverything) {
   EXPECT_EQ(r.count(CheckKind::Orientation), 10);
   EXPECT_EQ(r.issues.size(), 3u);
   EXPECT_NE(r.to_text().find("and 7 more not listed"), std::string::npos) << r.to_text();
+}
+
+}  // namespace
+}  // namespace pqmesh
+
+namespace pqmesh {
+namespace {
+
+TEST(Check2d, AgainstMakeDomain) {
+  // The square given clockwise with a clockwise-given hole: make_domain orients.
+  Pslg2 p;
+  p.vertices = {{0, 0}, {0, 3}, {3, 3}, {3, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  p.holes = {{1.5, 1.5}};
+  const Domain2 d = make_domain(p);
+  // The annulus of SquareWithHoleIsValid in these ids: o0..o3 = 0 3 2 1, i0..i3 = 4 5 6 7.
+  TriMesh2 m;
+  m.vertices = p.vertices;
+  m.triangles = {{0, 3, 5}, {0, 5, 4}, {3, 2, 6}, {3, 6, 5}, {2, 1, 7}, {2, 7, 6}, {1, 0, 4}, {1, 4, 7}};
+  const CheckReport r = check_mesh(m, d);
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  m.vertices.push_back({1.5, 1.5});  // in the hole
+  EXPECT_EQ(check_mesh(m, d).kinds(), (std::vector<CheckKind>{CheckKind::UnusedVertex, CheckKind::VertexOutside}));
 }
 
 }  // namespace

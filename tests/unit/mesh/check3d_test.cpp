@@ -83,7 +83,74 @@ TEST(Check3d, CubeWithCavityIsValid) {
   EXPECT_EQ(r.elements, 26 * 6);
   // 6 outer faces x 9 squares x 2 triangles + 6 cavity faces x 2 triangles.
   EXPECT_EQ(r.boundary_faces, 108 + 12);
-  EXPECT_DOUBLE_EQ(r.mesh_volume, 26.0);
+  EXPECT_NEAR(r.mesh_volume, 26.0, 1e-12);  // a sum of 156 rounded volumes
+}
+
+// A square frame [0,3]^2 x [0,1] around the hole [1,2]^2 (a solid torus):
+// bottom and top facets have a hole loop. Vertex ids: outer corners o0..o3 =
+// (0,0) (3,0) (3,3) (0,3), hole corners i0..i3 = (1,1) (2,1) (2,2) (1,2), ids
+// 0..7 at z = 0 and 8..15 at z = 1. Facets: 0 bottom, 1 top, 2..5 outer sides,
+// 6..9 hole sides; every loop's normal was checked by a cross product.
+Domain3 frame_domain() {
+  const Vec2 ring[8] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  std::vector<Vec3> v;
+  for (int z = 0; z < 2; ++z)
+    for (const Vec2& p : ring) v.push_back({p.x, p.y, double(z)});
+  // Single-loop facets through the fixture, then the two facets with holes.
+  const std::vector<std::vector<int>> sides = {{0, 1, 9, 8},  {1, 2, 10, 9},  {2, 3, 11, 10},  {3, 0, 8, 11},
+                                               {5, 4, 12, 13}, {6, 5, 13, 14}, {7, 6, 14, 15}, {4, 7, 15, 12}};
+  Domain3 d = facet_domain(v, sides, 8.0);
+  // The 2D annulus triangulation (check2d_test.cpp), counter-clockwise from above.
+  const int annulus[8][3] = {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  Facet3 bottom, top;
+  bottom.loops = {{0, 3, 2, 1}, {4, 5, 6, 7}};      // normal -z; hole turns the other way
+  top.loops = {{8, 9, 10, 11}, {12, 15, 14, 13}};   // normal +z
+  d.plc.facets.insert(d.plc.facets.begin(), {bottom, top});
+  for (int& owner : d.facet_triangle_owner) owner += 2;
+  for (const auto& t : annulus) {
+    d.facet_triangles.push_back({t[0], t[2], t[1]});
+    d.facet_triangle_owner.push_back(0);
+    d.facet_triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+    d.facet_triangle_owner.push_back(1);
+  }
+  d.facet_normals.insert(d.facet_normals.begin(), {Vec3{0, 0, -1}, Vec3{0, 0, 1}});
+  for (auto& e : d.edges)
+    for (int& f : e.facets) f += 2;
+  auto add_edge = [&](int a, int b, int f) {
+    DomainEdge e;
+    e.a = std::min(a, b);
+    e.b = std::max(a, b);
+    auto it = std::find_if(d.edges.begin(), d.edges.end(), [&](const DomainEdge& x) { return x.a == e.a && x.b == e.b; });
+    it->facets[1] = f;  // every top/bottom side is also a side facet's edge
+  };
+  for (int f = 0; f < 2; ++f)
+    for (const auto& loop : d.plc.facets[f].loops)
+      for (std::size_t k = 0; k < loop.size(); ++k) add_edge(loop[k], loop[(k + 1) % loop.size()], f);
+  d.shells[0].facets = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  return d;
+}
+
+TEST(Check3d, FrameWithHoledFacetsIsValid) {
+  const Domain3 d = frame_domain();
+  const TetMesh3 m = kuhn_grid(3, 3, 1, kO, 1.0, [](int i, int j, int) { return i == 1 && j == 1; });
+  const CheckReport r = check_mesh(m, d);
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_NEAR(r.mesh_volume, 8.0, 1e-12);
+
+  // The hole filled: the hole's vertical edges (4 12) (5 13) (6 14) (7 15) run
+  // through the inside of the mesh (MissingEdge; the hole sides, which contain
+  // them, are then not compared), bottom and top get two extra triangles each
+  // over the hole (MissingFacet 0 and 1), and the volume is 9.
+  const TetMesh3 full = kuhn_grid(3, 3, 1, kO, 1.0, [](int, int, int) { return false; });
+  const CheckReport bad = check_mesh(full, d);
+  EXPECT_EQ(kinds(bad), (std::vector<CheckKind>{CheckKind::Volume, CheckKind::MissingEdge, CheckKind::MissingFacet}))
+      << bad.to_text();
+  EXPECT_EQ(bad.count(CheckKind::MissingEdge), 4);
+  ASSERT_EQ(bad.count(CheckKind::MissingFacet), 2);
+  std::vector<std::int64_t> facets;
+  for (const auto& i : bad.issues)
+    if (i.kind == CheckKind::MissingFacet) facets.push_back(i.ids[0]);
+  EXPECT_EQ(facets, (std::vector<std::int64_t>{0, 1}));
 }
 
 TEST(Check3d, ListedBoundaryFaces) {
@@ -189,7 +256,9 @@ TEST(Check3d, MissingTetrahedronInTheBoundaryLayer) {
       << r.to_text();
   EXPECT_EQ(r.count(CheckKind::BoundaryFace), 3);
   for (const auto& i : r.issues) {
-    if (i.kind == CheckKind::MissingFacet) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0}));
+    if (i.kind == CheckKind::MissingFacet) {
+      EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0}));
+    }
   }
   EXPECT_NEAR(r.mesh_volume, 26.0 - 1.0 / 6.0, 1e-12);
 }
@@ -206,7 +275,9 @@ TEST(Check3d, MissingTetrahedronAtACubeEdge) {
       << r.to_text();
   EXPECT_EQ(r.count(CheckKind::BoundaryFace), 2);
   for (const auto& i : r.issues) {
-    if (i.kind == CheckKind::MissingEdge) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{1, 3}));
+    if (i.kind == CheckKind::MissingEdge) {
+      EXPECT_EQ(i.ids, (std::vector<std::int64_t>{1, 3}));
+    }
   }
 }
 
@@ -242,7 +313,9 @@ TEST(Check3d, InputEdgeNotRecovered) {
   EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::BoundaryFace, CheckKind::MissingEdge})) << r.to_text();
   EXPECT_EQ(r.count(CheckKind::BoundaryFace), 2);
   for (const auto& i : r.issues) {
-    if (i.kind == CheckKind::MissingEdge) EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0, 3}));
+    if (i.kind == CheckKind::MissingEdge) {
+      EXPECT_EQ(i.ids, (std::vector<std::int64_t>{0, 3}));
+    }
   }
 }
 
@@ -303,6 +376,44 @@ TEST(Check3d, StructuredCubePerformance) {
   EXPECT_TRUE(r.valid()) << r.to_text();
   EXPECT_EQ(r.boundary_faces, 6 * n * n * 2);
   EXPECT_LT(seconds, 20.0);
+}
+
+}  // namespace
+}  // namespace pqmesh
+
+namespace pqmesh {
+namespace {
+
+// An empty mesh: every input vertex missing, volume 0, nothing else to say.
+TEST(Check3d, EmptyMesh) {
+  const CheckReport r = check_mesh(TetMesh3{}, box_domain(kO, kOne));
+  EXPECT_EQ(kinds(r), (std::vector<CheckKind>{CheckKind::Volume, CheckKind::MissingVertex})) << r.to_text();
+  EXPECT_EQ(r.count(CheckKind::MissingVertex), 8);
+}
+
+}  // namespace
+}  // namespace pqmesh
+
+namespace pqmesh {
+namespace {
+
+// The same meshes against domains built by the real make_domain (facets given
+// in arbitrary orientation; make_domain orients them outward).
+TEST(Check3d, AgainstMakeDomain) {
+  Plc3 plc;
+  for (int v = 0; v < 8; ++v) plc.vertices.push_back(box_corner(kO, kOne, v));
+  for (auto loop : box_loops(0)) {
+    std::reverse(loop.begin(), loop.end());  // inward on purpose
+    Facet3 f;
+    f.loops = {loop};
+    plc.facets.push_back(f);
+  }
+  const Domain3 d = make_domain(plc);
+  EXPECT_TRUE(check_mesh(cube5(), d).valid()) << check_mesh(cube5(), d).to_text();
+  EXPECT_TRUE(check_mesh(cube6(), d).valid()) << check_mesh(cube6(), d).to_text();
+  TetMesh3 outside = cube5();
+  outside.vertices.push_back({0.5, 0.5, 1.5});
+  EXPECT_EQ(check_mesh(outside, d).kinds(), (std::vector<CheckKind>{CheckKind::UnusedVertex, CheckKind::VertexOutside}));
 }
 
 }  // namespace

@@ -130,23 +130,22 @@ inline std::array<int, 4> positive(const std::vector<Vec3>& v, std::array<int, 4
   return t;
 }
 
-// Structured grid of n x n x n cells over [lo, lo + n*h]^3, every cell split
+// Structured grid of nx x ny x nz cells of size h from lo, every cell split
 // into the 6 Kuhn tetrahedra along its main diagonal (conforming across cells
 // because every cell uses the same diagonal direction). Cells for which
 // `skip(i, j, k)` is true are left out. Vertex (i, j, k) has id
-// i + (n+1) * (j + (n+1) * k).
+// i + (nx+1) * (j + (ny+1) * k).
 template <class Skip>
-TetMesh3 kuhn_grid(int n, Vec3 lo, double h, Skip&& skip) {
+TetMesh3 kuhn_grid(int nx, int ny, int nz, Vec3 lo, double h, Skip&& skip) {
   TetMesh3 m;
-  const int s = n + 1;
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) m.vertices.push_back({lo.x + i * h, lo.y + j * h, lo.z + k * h});
-  auto id = [&](int i, int j, int k) { return i + s * (j + s * k); };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) m.vertices.push_back({lo.x + i * h, lo.y + j * h, lo.z + k * h});
+  auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
   const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};  // 3 even, 3 odd
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
         if (skip(i, j, k)) continue;
         for (int p = 0; p < 6; ++p) {
           int c[3] = {i, j, k};
@@ -163,6 +162,11 @@ TetMesh3 kuhn_grid(int n, Vec3 lo, double h, Skip&& skip) {
         }
       }
   return m;
+}
+
+template <class Skip>
+TetMesh3 kuhn_grid(int n, Vec3 lo, double h, Skip&& skip) {
+  return kuhn_grid(n, n, n, lo, h, skip);
 }
 
 inline TetMesh3 kuhn_grid(int n, Vec3 lo, double h) {

@@ -172,6 +172,27 @@ TEST(Domain3, HolePointInCavityAccepted) {
   EXPECT_NO_THROW(make_domain(plc));
 }
 
+TEST(Domain3, CoplanarAdjacentFacetsAndCollinearVertices) {
+  // [0,2]^3 with the top face split at x = 1 into two coplanar facets; the
+  // front and back faces gain the split points (1,0,2), (1,2,2) as collinear
+  // vertices (pentagons).
+  Plc3 plc = box({0, 0, 0}, {2, 2, 2});
+  plc.vertices.push_back({1, 0, 2});  // 8
+  plc.vertices.push_back({1, 2, 2});  // 9
+  plc.facets[1].loops[0] = {4, 8, 9, 6};
+  plc.facets.push_back(Facet3{{{8, 5, 7, 9}}, 0});  // facet 6
+  plc.facets[2].loops[0] = {0, 1, 5, 8, 4};
+  plc.facets[3].loops[0] = {2, 6, 9, 7, 3};
+  const Domain3 d = make_domain(plc);
+  EXPECT_EQ(d.volume, 8.0);
+  EXPECT_EQ(d.edges.size(), 15u);  // 12 - 2 split edges + 4 halves + the split line (8, 9)
+  EXPECT_EQ(d.facet_normals[6], (Vec3{0, 0, 1}));
+  EXPECT_DOUBLE_EQ(facet_area(d, 2), 4.0);  // the pentagon is still the 2 x 2 square
+  expect_triangles_follow_normals(d);
+  EXPECT_EQ(locate(d, {1, 1, 2}), Location::Boundary);
+  EXPECT_EQ(locate(d, {1, 1, 1}), Location::Inside);
+}
+
 TEST(Domain3, UnusedVertexIgnored) {
   Plc3 plc = box();
   plc.vertices.push_back({0, 0, 0});  // equal to vertex 0 but unused: not a duplicate
