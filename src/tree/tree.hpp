@@ -22,7 +22,7 @@
 // children get the same keys as the children of any other split duplicate, so all
 // navigation is by key, never by parent pointers.
 //
-// Merged boxes (thesis §4.1.3, vertex centering, Fig. 4.3). merge() unites a 2x2(x2)
+// Merged boxes (thesis §4.1.3, vertex centering, Fig. 4.3: "uniting"). merge() unites a 2x2(x2)
 // block of same-level leaves (plus, optionally, duplicates of those cells) into one
 // new leaf of twice the side. The block may start at any cell, so the merged box is
 // in general NOT a tree cell: its key has level L-1 and an origin q on the level-L
@@ -35,6 +35,15 @@
 // open cubes are disjoint. Leaves whose open cubes overlap are duplicates of each
 // other or descendants of different duplicates of one cube; they are never
 // neighbours and are reported by overlapping() instead.
+//
+// Queries. A neighbour query visits the ring of grid cells around the box (3^D - 1
+// cells of its own level; 4^D - 2^D cells of the next finer level for an unaligned
+// merged box). For each cell it looks up the cell's key and takes the leaves there,
+// descends through split nodes to the smaller leaves touching the box, or walks up
+// to the first existing ancestor key (the larger leaf containing the cell). Absorbed
+// nodes forward to their merged box. Candidates are then filtered by exact integer
+// geometry (key.hpp), so the result does not depend on how they were found. In a
+// balanced tree a query costs O(3^D) hash lookups.
 //
 // Balance (thesis §4.1.1): "no box is balance-adjacent to a box more than twice its
 // size". Balance-adjacency needs P, so the mesher supplies it as a callback; the tree
@@ -131,6 +140,10 @@ class Tree {
   double plane(std::int32_t n, int axis, bool upper) const { return key_plane(key(n), axis, upper); }
   double key_plane(const Key& k, int axis, bool upper) const;
   Box box(std::int32_t n) const;
+  // The extended box ex(b) of thesis §4.1.1: the concentric cube of 5 times the side,
+  // [lo - 2h, hi + 2h] per axis. Its planes are exact doubles as well (dyadic, same
+  // scale); it may reach outside the root cube.
+  Box extended_box(std::int32_t n) const;
 
   // ---- structure
   // Splits leaf n into 2^D children (component 0, payload -1, unprotected) and

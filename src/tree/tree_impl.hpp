@@ -50,6 +50,17 @@ typename Tree<D>::Box Tree<D>::box(std::int32_t n) const {
 }
 
 template <int D>
+typename Tree<D>::Box Tree<D>::extended_box(std::int32_t n) const {
+  Box b = box(n);
+  const double h2 = 2 * side(n);  // exact: a power of two
+  for (int a = 0; a < D; ++a) {
+    b.lo[a] -= h2;  // exact: integer multiples of h / 2 well inside 53 bits
+    b.hi[a] += h2;
+  }
+  return b;
+}
+
+template <int D>
 std::int32_t Tree<D>::find(const Key& k) const {
   return index_.find(detail::hash_key(k), [&](std::int32_t id) { return at(id).key == k; });
 }

@@ -71,6 +71,24 @@ TYPED_TEST(TreeKey, PlanesOfAnOffsetRoot) {
   EXPECT_EQ(t.side(n), 0.5);
 }
 
+// ex(b) by hand: the level-2 cell (1, 2, ..): [1/4, 1/2] x [1/2, 3/4] (x [1/2, 3/4]); side 1/4, so ex(b) is
+// [1/4 - 1/2, 1/2 + 1/2] = [-1/4, 1] along x and [0, 5/4] along the other axes.
+TYPED_TEST(TreeKey, ExtendedBoxIsFiveTimesTheCube) {
+  constexpr int D = TypeParam::value;
+  auto t = test::unit_tree<D>();
+  test::refine_uniform(t, 2);
+  std::array<std::int64_t, D> c{};
+  c.fill(2);
+  c[0] = 1;
+  const auto ex = t.extended_box(test::at_cell(t, 2, c));
+  EXPECT_EQ(ex.lo[0], -0.25);
+  EXPECT_EQ(ex.hi[0], 1.0);
+  for (int a = 1; a < D; ++a) {
+    EXPECT_EQ(ex.lo[a], 0.0);
+    EXPECT_EQ(ex.hi[a], 1.25);
+  }
+}
+
 // For root [0, 1], the lower plane of cell i at level L is exactly i / 2^L: scaling
 // by 2^L (exact) must give back the integer i, at every level down to max_level().
 TYPED_TEST(TreeKey, PlanesAreExactAtEveryLevel) {

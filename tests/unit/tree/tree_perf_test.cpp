@@ -64,5 +64,34 @@ TEST(TreePerf, BalanceDeepPointRefinementOctree) {
   EXPECT_LT(bal, 5.0);
 }
 
+// Many refinement sites: 400 pseudo-random points, each refined to depth 12, then one
+// balance pass (linear in the number of splits).
+TEST(TreePerf, BalanceManyPointsOctree) {
+  auto t = test::unit_tree<3>();
+  std::uint64_t s = 12345;
+  auto next = [&] {  // LCG in (0, 1), never dyadic enough to land on a plane
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return (static_cast<double>(s >> 11) + 0.5) * 0x1p-53;
+  };
+  std::vector<std::int32_t> at;
+  for (int i = 0; i < 400; ++i) {
+    const std::array<double, 3> p{next(), next(), next()};
+    for (;;) {
+      t.leaves_containing(p, at);
+      ASSERT_EQ(at.size(), 1u);
+      if (t.level(at[0]) >= 12) break;
+      t.split(at[0]);
+    }
+  }
+  const std::int32_t before = t.leaf_count();
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::int64_t splits = t.balance_all();
+  const double bal = seconds_since(t0);
+  std::printf("[perf] octree 400 points to depth 12: %d -> %d leaves, %lld balance splits, %.3fs\n", before,
+              t.leaf_count(), static_cast<long long>(splits), bal);
+  EXPECT_GT(splits, 0);
+  EXPECT_LT(bal, 10.0);
+}
+
 }  // namespace
 }  // namespace pqmesh
