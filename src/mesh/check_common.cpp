@@ -84,4 +84,21 @@ double relative_difference(double a, double b) {
   return std::abs(a - b) / scale;
 }
 
+void check_marker_count(IssueSink& sink, std::size_t markers, std::size_t items, const char* what) {
+  if (markers != 0 && markers != items)
+    sink.add(CheckKind::BadIndex, {},
+             std::string(what) + " has " + std::to_string(markers) + " entries for " + std::to_string(items) +
+                 " items (must be empty or equal)");
+}
+
+void compare_volume(IssueSink& sink, const char* quantity, double mesh_volume, double domain_volume,
+                    double tolerance) {
+  const double diff = relative_difference(mesh_volume, domain_volume);
+  if (!(diff > tolerance)) return;  // (a NaN difference is not reported, as before)
+  sink.add(CheckKind::Volume, {},
+           "total " + std::string(quantity) + " " + format_number(mesh_volume) + " differs from the domain's " +
+               format_number(domain_volume) + " (relative difference " + format_short(diff) + " > tolerance " +
+               format_short(tolerance) + "; a floating-point measurement)");
+}
+
 }  // namespace pqmesh::detail

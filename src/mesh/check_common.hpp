@@ -1,5 +1,6 @@
 #pragma once
-// Pieces shared by the 2D and 3D validity checkers (check2d.cpp, check3d.cpp).
+// Pieces shared by the 2D and 3D validity checkers (check2d*.cpp, check3d*.cpp):
+// formatting, issue collection, and the checks whose logic is the same in both.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -101,5 +102,161 @@ class CompensatedSum {
 
 // Relative difference |a - b| / max(|a|, |b|), 0 when both are 0.
 double relative_difference(double a, double b);
+
+// ---- checks shared by both dimensions (same logic, same messages) ---------
+
+// Stage 1: BadIndex when a marker array is neither empty nor one entry per item.
+void check_marker_count(IssueSink& sink, std::size_t markers, std::size_t items, const char* what);
+
+// Stage 3: UnusedVertex for every vertex on no element ("triangle",
+// "tetrahedron").
+template <class V, class Element>
+void report_unused_vertices(IssueSink& sink, const std::vector<V>& points, const std::vector<Element>& elements,
+                            const char* element_name) {
+  std::vector<char> used(points.size(), 0);
+  for (const auto& q : elements)
+    for (int v : q) used[v] = 1;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (!used[v])
+      sink.add(CheckKind::UnusedVertex, {static_cast<std::int64_t>(v)},
+               "vertex " + std::to_string(v) + " at " + format_point(points[v]) + " is on no " + element_name);
+}
+
+// Stage 3: NonConforming for every group of vertices with exactly the same
+// coordinates (`order` from sort_by_coordinates). Such vertices cannot be told
+// apart by geometry; elements using one or the other do not share faces.
+template <class V>
+void report_coincident_vertices(IssueSink& sink, const std::vector<V>& points, const std::vector<int>& order) {
+  for (std::size_t i = 0; i + 1 < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && points[order[j]] == points[order[i]]) ++j;
+    if (j - i > 1) {
+      std::vector<std::int64_t> ids(order.begin() + static_cast<long>(i), order.begin() + static_cast<long>(j));
+      std::vector<int> vs(order.begin() + static_cast<long>(i), order.begin() + static_cast<long>(j));
+      sink.add(CheckKind::NonConforming, std::move(ids),
+               "vertices " + format_ids(vs) + " have the same coordinates " + format_point(points[order[i]]));
+    }
+    i = j;
+  }
+}
+
+// Stage 3: the vertices lying on one boundary element (edge / triangle) other
+// than its corners, searched breadth-first from the corners along `adj`,
+// expanding only through vertices w with on(w). found(w) is called once per
+// vertex over all searches (`reported` remembers them). Returns false when the
+// search stopped at kMaxHangingExpansion vertices.
+inline constexpr std::size_t kMaxHangingExpansion = 1024;
+template <class On, class Found>
+bool search_hanging_vertices(const Adjacency& adj, std::span<const int> corners, std::vector<char>& reported,
+                             std::vector<int>& queue, On on, Found found) {
+  bool capped = false;
+  queue.assign(corners.begin(), corners.end());
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    for (int w : adj.of(queue[head])) {
+      if (std::find(queue.begin(), queue.end(), w) != queue.end()) continue;
+      if (!on(w)) continue;
+      if (queue.size() >= kMaxHangingExpansion) {
+        capped = true;
+        break;
+      }
+      queue.push_back(w);
+      if (!reported[w]) {
+        reported[w] = 1;
+        found(w);
+      }
+    }
+  }
+  return !capped;
+}
+
+// Stage 4: in2mesh[i] = the mesh vertex at input vertex i's exact coordinates
+// (or -1), mesh2in the inverse (or -1); MissingVertex for every referenced
+// input vertex that is no mesh vertex. Returns the number of unreferenced
+// input vertices (not required to be mesh vertices).
+template <class V>
+int map_input_vertices_by_coordinates(IssueSink& sink, const std::vector<V>& mesh_points,
+                                      const std::vector<int>& order,
+                                      const std::vector<V>& input, const std::vector<char>& referenced,
+                                      std::vector<int>& in2mesh, std::vector<int>& mesh2in) {
+  in2mesh.assign(input.size(), -1);
+  mesh2in.assign(mesh_points.size(), -1);
+  int unreferenced = 0;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    const int mv = find_vertex(mesh_points, order, input[i]);
+    in2mesh[i] = mv;
+    if (mv >= 0) mesh2in[mv] = static_cast<int>(i);
+    if (!referenced[i]) {
+      ++unreferenced;
+      continue;
+    }
+    if (mv < 0)
+      sink.add(CheckKind::MissingVertex, {static_cast<std::int64_t>(i)},
+               "input vertex " + std::to_string(i) + " at " + format_point(input[i]) + " is not a mesh vertex");
+  }
+  return unreferenced;
+}
+
+// Stage 4: the walk of an input edge (segment) from mesh vertex a to mesh
+// vertex b, each step to the unique neighbour w of the current vertex c (in
+// `adj`) with step(c, w): w lies on the edge strictly closer to b.
+struct ChainWalk {
+  enum class End { Reached, Stuck, Forked };
+  End end = End::Reached;
+  std::vector<int> chain;  // a, ..., the last vertex reached
+  int next = -1, other = -1;  // Forked: two qualifying neighbours of chain.back()
+};
+template <class Step>
+ChainWalk walk_chain(const Adjacency& adj, int a, int b, Step step) {
+  ChainWalk walk;
+  walk.chain.push_back(a);
+  int c = a;
+  while (c != b) {
+    int next = -1, found = 0, other = -1;
+    for (int w : adj.of(c)) {
+      if (!(w == b || step(c, w))) continue;
+      if (found++ == 0)
+        next = w;
+      else
+        other = w;
+    }
+    if (found == 0) {
+      walk.end = ChainWalk::End::Stuck;
+      return walk;
+    }
+    if (found > 1) {
+      walk.end = ChainWalk::End::Forked;
+      walk.next = next;
+      walk.other = other;
+      return walk;
+    }
+    walk.chain.push_back(next);
+    c = next;
+  }
+  return walk;
+}
+
+// The public entry points of both dimensions: a Checker (Checker2 / Checker3)
+// fills one report; the domain stages run after stages 1-3, told whether those
+// were clean.
+template <class Checker, class Mesh>
+CheckReport run_topology_check(const Mesh& mesh, const CheckOptions& options) {
+  CheckReport report;
+  Checker checker(mesh, options, report);
+  checker.run_topology();
+  return report;
+}
+template <class Checker, class Mesh, class Domain>
+CheckReport run_full_check(const Mesh& mesh, const Domain& domain, const CheckOptions& options) {
+  CheckReport report;
+  Checker checker(mesh, options, report);
+  const bool ok = checker.run_topology();
+  checker.run_domain(domain, ok);
+  return report;
+}
+
+// Volume issue when the measured total volume (area: quantity "area") differs
+// from the domain's beyond the relative tolerance.
+void compare_volume(IssueSink& sink, const char* quantity, double mesh_volume, double domain_volume,
+                    double tolerance);
 
 }  // namespace pqmesh::detail

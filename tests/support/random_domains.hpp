@@ -1,0 +1,114 @@
+#pragma once
+// Seeded random input domains for property tests (DESIGN.md §3, §9: the
+// corpus x invariants tests of tests/property).
+//
+// Every generator is a pure function of its seed and options: the random bits
+// come from std::mt19937_64 (whose output sequence the C++ standard fixes) and
+// are mapped to numbers by the small functions in random_domains.cpp (not by
+// std::uniform_*_distribution, whose results differ between standard
+// libraries). Directions use a polynomial sin/cos built from + - * / only, so
+// no libm function reaches a coordinate either. Every output coordinate is a
+// dyadic rational k * 2^-grid_bits (times a power of two scale, plus a dyadic
+// offset), hence exactly representable, and derived points such as edge
+// midpoints are exact too.
+//
+// Validity is by construction plus exact verification (orient2d) inside the
+// generator: a candidate that fails is rejected and redrawn from the same
+// random stream, so the result is still deterministic. The property tests run
+// make_domain on every output as an independent check.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pqmesh/plc.hpp"
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::test {
+
+struct PolygonOptions {
+  int min_vertices = 5;          // outer loop, before spikes are added
+  int max_vertices = 24;
+  int max_holes = 4;             // 0..max_holes holes
+  int min_hole_vertices = 3;
+  int max_hole_vertices = 9;
+  double spike_probability = 0.35;   // 1-2 sharp spikes in the outer loop; half as often a notch in a hole
+  // Spike/notch corner angles are drawn in [min, max], biased towards min
+  // (min + (max - min) u^3), and hit the drawn value within a few percent.
+  // The smallest corner of the polygon is never below ~min: coarse snapping
+  // leaves spike vertices and their neighbours alone. (Frustums can make 3D
+  // edge-facet angles smaller than this, down to ~0.3 deg in the default corpus.)
+  double min_spike_degrees = 1.0;
+  double max_spike_degrees = 20.0;
+  double near_touch_probability = 0.4;  // per hole: push it to a tiny gap from its neighbour
+  double min_gap = 1e-3;             // relative to the outer radius; gaps drawn in [min_gap, 30 min_gap]
+  double snap_probability = 0.15;    // per vertex: snap to the coarse dyadic grid (multiples of 1/8)
+  int grid_bits = 20;                // fine grid: coordinates are multiples of 2^-grid_bits (before scaling)
+  bool shuffle_ids = true;           // random vertex numbering, segment order and loop directions
+  bool random_scale = true;          // multiply by 2^j, j in [-3, 3], and translate by a dyadic offset
+};
+
+// The structured form: loops[0] is the outer loop, counter-clockwise; loops[1..]
+// are holes, clockwise (interior of the domain on the left of every loop).
+// hole_points[i] lies strictly inside hole loop i + 1. Every loop is simple,
+// no two loops touch, every hole is strictly inside the outer loop.
+struct PolygonWithHoles {
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<Vec2> hole_points;
+  int spikes = 0;            // how many spikes were inserted (for describe())
+  int near_touching = 0;     // how many holes were pushed to a tiny gap
+  int snapped = 0;           // how many vertices were snapped to the coarse grid
+};
+
+PolygonWithHoles random_polygon_loops(std::uint64_t seed, const PolygonOptions& options = {});
+
+// As a Pslg2: vertices (numbered in a seeded random order when
+// options.shuffle_ids), segments (random order and direction), segment
+// markers (1 on the outer loop, 2 + i on hole i), vertex markers (same scheme)
+// and one hole point per hole.
+Pslg2 to_pslg(const PolygonWithHoles& polygon, std::uint64_t seed, bool shuffle_ids);
+Pslg2 random_polygon_with_holes(std::uint64_t seed, const PolygonOptions& options = {});
+
+struct PolyhedronOptions {
+  PolygonOptions polygon{};           // the extruded cross-section
+  double frustum_probability = 0.3;   // top = centre + s (p - centre), s dyadic != 1
+  double cavity_probability = 0.5;    // 1 or 2 cavities (closed floating shells)
+  double polygon_cavity_probability = 0.4;  // a cavity is a small prism instead of a box (right prisms only)
+  double near_touch_probability = 0.3;      // a cavity placed at a tiny gap from the boundary
+  bool shuffle_ids = true;            // random vertex numbering, facet order and loop directions
+};
+
+// A cavity: the prism footprint x [z0, z1]; footprint counter-clockwise.
+struct Cavity {
+  std::vector<Vec2> footprint;
+  double z0 = 0, z1 = 0;
+  bool box = false;  // footprint is an axis-aligned rectangle
+  Vec2 inner_point;  // strictly inside the footprint (a TetGen hole point sits above it)
+};
+
+// The solid {(centre + lambda(z) (p - centre), z) : p in base, 0 <= z <= height}
+// with lambda(z) = 1 + (top_scale - 1) z / height, minus the cavities. Every
+// horizontal section is a homothetic copy of the base polygon with holes, so
+// it is a valid polyhedron; a side face (p_i, p_i+1, top_i+1, top_i) is a
+// trapezoid (top side parallel to the bottom side), planar, and exactly so
+// because the scaled coordinates are computed without rounding (checked by
+// orient3d; a non-planar quad would be split, which never happened).
+struct RandomPolyhedron {
+  Plc3 plc;
+  PolygonWithHoles base;     // at z = 0, in the same coordinates as plc
+  double height = 1;
+  double top_scale = 1;      // 1: right prism
+  Vec2 centre;               // homothety centre (dyadic)
+  std::vector<Cavity> cavities;
+  int split_quads = 0;       // side quads that had to be split (expected 0)
+  bool right_prism() const { return top_scale == 1; }
+};
+
+RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOptions& options = {});
+Plc3 random_polyhedron(std::uint64_t seed, const PolyhedronOptions& options = {});
+
+// One line for failure messages, e.g.
+// "seed 17: polygon, outer 19 vertices, 3 holes, 2 spikes, 1 near-touching, 4 snapped".
+std::string describe_polygon(std::uint64_t seed, const PolygonOptions& options = {});
+std::string describe_polyhedron(std::uint64_t seed, const PolyhedronOptions& options = {});
+
+}  // namespace pqmesh::test
