@@ -1,9 +1,10 @@
 #pragma once
-// Local feature size of a polygon with holes, and the size lower bound
-// I(P) = integral over P of 1 / lfs(x)^2 dA (thesis §1.3 and §2: an
-// element-count lower bound of the form c * I(P) holds for every mesh whose
-// angles are bounded below; Bern–Eppstein–Gilbert, Ruppert). The 2D quadtree
-// mesher reports its element count against I(P).
+// Local feature size of a polygon with holes, and the size estimate
+// I(P) = integral over P of 1 / lfs(x)^2 dA (Bern–Eppstein–Gilbert, Ruppert:
+// where lfs measures distance inside P, every mesh whose angles are bounded
+// below has at least c * I(P) elements). See "Scope" below for why the
+// Euclidean version computed here is a lower bound only where Euclidean and
+// in-domain distances agree.
 //
 // Definition (Ruppert's lfs, Mitchell's f_* for polygons). The features of P
 // are its vertices and its closed edges. Two features are disjoint when they
@@ -25,7 +26,9 @@
 // about s even deep inside the solid material on both sides, so I(P) of a comb
 // grows like (tooth length) / (slot width). Mitchell's meshers measure
 // distance inside P (geodesic feature size), for which the count does not grow
-// like that; a geodesic variant is not implemented.
+// like that, and no bounded-angle mesh has to be fine there: across exterior
+// slots this I(P) overestimates the lower bound. A geodesic variant is not
+// implemented.
 #include <cstdint>
 #include <vector>
 
