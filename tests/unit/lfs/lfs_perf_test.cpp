@@ -1,6 +1,6 @@
 // The grid evaluator scales: many queries on a polygon with thousands of
 // edges cost about O(log n) each, far from the O(n^2) of the brute force
-// (asserted generously so that sanitizer/debug builds pass).
+// (times are printed for information, not asserted: performance belongs to benchmarks).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -49,7 +49,6 @@ TEST(LfsPerf, ManyQueriesOnALargePolygon) {
   std::printf("2000 edges, grid %d x %d: 200000 queries in %.3f s (%.2f us each)\n", lfs.grid_columns(),
               lfs.grid_rows(), seconds, 1e6 * seconds / 200000);
   EXPECT_GT(sum, 0);
-  EXPECT_LT(seconds, 10.0);
   // Spot check against the brute force (2000 edges + 2000 vertices: 8e6 pairs per point).
   for (int k = 0; k < 40; ++k) EXPECT_EQ(lfs.at(xs[static_cast<std::size_t>(k)]), local_feature_size(d, xs[static_cast<std::size_t>(k)]));
 }
@@ -62,7 +61,6 @@ TEST(LfsPerf, IntegralOnALargePolygon) {
   std::printf("2000 edges: I = %.1f, %lld cells, min lfs %.3g, %.3f s\n", r.value, static_cast<long long>(r.cells),
               r.min_lfs, seconds);
   EXPECT_GT(r.value, 0);
-  EXPECT_LT(seconds, 20.0);
 }
 
 }  // namespace

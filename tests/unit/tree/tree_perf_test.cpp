@@ -1,5 +1,5 @@
-// Timing smoke tests (print, assert generously): ~1e6 leaves in 3D, neighbour queries
-// over all of them, and balancing a deep point refinement.
+// Scale tests (the figures are printed for information; performance is judged by benchmarks,
+// not here): ~1e6 leaves in 3D, neighbour queries over all of them, and balancing a deep point refinement.
 #include <chrono>
 #include <cstdio>
 
@@ -45,9 +45,6 @@ TEST(TreePerf, MillionLeavesOctree) {
   std::printf("[perf] octree 1007616 leaves: build %.3fs, balance check %.3fs, all neighbours %.3fs "
               "(%lld pairs), z-order %.3fs\n",
               build, bal, query, static_cast<long long>(total), order);
-  EXPECT_LT(build, 10.0);
-  EXPECT_LT(bal, 10.0);
-  EXPECT_LT(query, 20.0);
 }
 
 TEST(TreePerf, BalanceDeepPointRefinementOctree) {
@@ -61,7 +58,6 @@ TEST(TreePerf, BalanceDeepPointRefinementOctree) {
   std::printf("[perf] octree depth-24 point refinement: %lld balance splits, %d leaves, %.3fs (refine %.3fs)\n",
               static_cast<long long>(splits), t.leaf_count(), bal,
               std::chrono::duration<double>(t1 - t0).count());
-  EXPECT_LT(bal, 5.0);
 }
 
 // Many refinement sites: 400 pseudo-random points, each refined to depth 12, then one
@@ -90,7 +86,6 @@ TEST(TreePerf, BalanceManyPointsOctree) {
   std::printf("[perf] octree 400 points to depth 12: %d -> %d leaves, %lld balance splits, %.3fs\n", before,
               t.leaf_count(), static_cast<long long>(splits), bal);
   EXPECT_GT(splits, 0);
-  EXPECT_LT(bal, 10.0);
 }
 
 }  // namespace
