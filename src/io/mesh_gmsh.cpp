@@ -261,6 +261,10 @@ struct PhysicalName {
 };
 
 struct GmshReader {
+  // Every number takes at least two bytes (digit and separator): counts are
+  // reserved only up to what the file can hold, so an absurd count fails as
+  // Truncated when the file runs out instead of allocating.
+  std::int64_t max_numbers;
   TextReader in;
   int dim;
   bool v22 = false;
@@ -274,7 +278,9 @@ struct GmshReader {
   std::vector<std::pair<std::int64_t, int>> vertex_marker_entries;
   bool have_nodes = false, have_elements = false;
 
-  GmshReader(const std::string& path, int d) : in(path, read_whole_file(path), '\0'), dim(d) {}
+  GmshReader(const std::string& path, int d) : GmshReader(path, read_whole_file(path), d) {}
+  GmshReader(const std::string& path, std::string text, int d)
+      : max_numbers(static_cast<std::int64_t>(text.size() / 2 + 1)), in(path, std::move(text), '\0'), dim(d) {}
 
   int marker_of_physical(int d, int physical) const {
     if (physical == 0) return 0;
@@ -368,7 +374,7 @@ struct GmshReader {
     have_nodes = true;
     if (v22) {
       const std::int64_t n = in.integer_in("number of nodes", 0, INT32_MAX - 1);
-      xyz.reserve(static_cast<std::size_t>(3 * n));
+      xyz.reserve(static_cast<std::size_t>(std::min(3 * n, max_numbers)));
       for (std::int64_t i = 0; i < n; ++i) {
         add_node(in.integer("node tag"));
         for (int k = 0; k < 3; ++k) xyz.push_back(in.real("node coordinate"));
@@ -378,7 +384,7 @@ struct GmshReader {
       const std::int64_t n = in.integer_in("number of nodes", 0, INT32_MAX - 1);
       in.integer("minimum node tag");
       in.integer("maximum node tag");
-      xyz.reserve(static_cast<std::size_t>(3 * n));
+      xyz.reserve(static_cast<std::size_t>(std::min(3 * n, max_numbers)));
       std::int64_t seen = 0;
       for (std::int64_t b = 0; b < blocks; ++b) {
         in.integer("entity dimension");

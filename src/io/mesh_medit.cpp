@@ -4,6 +4,7 @@
 //                Triangles (boundary faces, a b c ref)
 // 1-based vertex numbers; a missing marker is written as ref 0. Tetrahedra
 // keep pqmesh's positive orientation; the reader keeps the file's order.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,12 @@ template void write_medit(const TriMesh2&, const std::string&);
 template void write_medit(const TetMesh3&, const std::string&);
 
 RawMesh read_medit(const std::string& path, int dim) {
-  TextReader in(path, read_whole_file(path), '#');
+  std::string text = read_whole_file(path);
+  // Every number takes at least two bytes (digit and separator): an announced
+  // count is reserved only up to what the file can hold, so an absurd count
+  // reads to the end and fails as Truncated instead of allocating.
+  const std::int64_t max_numbers = static_cast<std::int64_t>(text.size() / 2 + 1);
+  TextReader in(path, std::move(text), '#');
   RawMesh raw;
   int file_dim = 0;
   bool have_vertices = false;
@@ -84,8 +90,8 @@ RawMesh read_medit(const std::string& path, int dim) {
       if (have_vertices) in.fail(ErrorCode::Syntax, "second Vertices section");
       have_vertices = true;
       nv = in.integer_in("vertex count", 0, INT32_MAX - 1);
-      raw.xyz.reserve(static_cast<std::size_t>(3 * nv));
-      raw.vertex_markers.reserve(static_cast<std::size_t>(nv));
+      raw.xyz.reserve(static_cast<std::size_t>(std::min(3 * nv, max_numbers)));
+      raw.vertex_markers.reserve(static_cast<std::size_t>(std::min(nv, max_numbers)));
       for (std::int64_t i = 0; i < nv; ++i) {
         for (int k = 0; k < file_dim; ++k) raw.xyz.push_back(in.real("vertex coordinate"));
         if (file_dim == 2) raw.xyz.push_back(0.0);

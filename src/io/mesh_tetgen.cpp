@@ -19,6 +19,7 @@
 // right-hand normal points INTO the volume (comment of outsubfaces() in
 // tetgen.cxx), the opposite of pqmesh: the writer writes (a, c, b) and the
 // reader reverses back.
+#include <algorithm>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -145,12 +146,16 @@ RawMesh read_tetgen(const std::string& path, int dim) {
   RawMesh raw;
   std::int64_t base = 1, nv = 0;
   {
-    TextReader in(stem + ".node", read_whole_file(stem + ".node"), '#');
+    std::string text = read_whole_file(stem + ".node");
+    // Every number takes at least two bytes: reserve only what the file can
+    // hold, so an absurd vertex count fails as Truncated without allocating.
+    const std::int64_t max_numbers = static_cast<std::int64_t>(text.size() / 2 + 1);
+    TextReader in(stem + ".node", std::move(text), '#');
     nv = in.integer_in("vertex count", 0, INT32_MAX - 1);
     in.integer_in("dimension", dim, dim);
     const std::int64_t nattr = in.integer_in("attribute count", 0, 1000);
     const std::int64_t nmark = in.integer_in("boundary marker flag", 0, 1);
-    raw.xyz.reserve(static_cast<std::size_t>(3 * nv));
+    raw.xyz.reserve(static_cast<std::size_t>(std::min(3 * nv, max_numbers)));
     for (std::int64_t i = 0; i < nv; ++i) {
       const std::int64_t index = in.integer("vertex number");
       if (i == 0) {

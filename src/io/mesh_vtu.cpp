@@ -346,7 +346,10 @@ std::vector<double> VtuReader::values(const XmlArray& a, std::size_t expected) {
     if (a.type == t.name) type = &t;
   if (type == nullptr) fail(ErrorCode::Unsupported, "DataArray type '" + a.type + "'", a.line);
   std::vector<double> out;
-  out.reserve(expected);
+  // expected comes from NumberOfPoints/NumberOfCells; every value takes at
+  // least one byte of the file, so reserve no more than the file can hold (an
+  // absurd count then fails the size check below instead of allocating).
+  out.reserve(std::min(expected, text_.size() + 1));
   if (a.format == "ascii") {
     const char* p = a.content.data();
     const char* end = p + a.content.size();
