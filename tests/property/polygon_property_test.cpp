@@ -24,13 +24,6 @@ constexpr std::uint64_t kPolygons = 300;
 
 using Loop = std::vector<Vec2>;
 
-// Shoelace, each term relative to the loop's first vertex (less cancellation
-// for translated polygons). Positive for a counter-clockwise loop.
-double shoelace(const Loop& L) {
-  double twice = 0;
-  for (std::size_t i = 1; i + 1 < L.size(); ++i) twice += cross(L[i] - L[0], L[i + 1] - L[0]);
-  return twice / 2;
-}
 
 // Interior angle at every corner, interior on the left of the loop: the angle
 // turning counter-clockwise from the next side to the previous one, in

@@ -26,11 +26,6 @@ constexpr std::uint64_t kPolyhedra = 200;
 
 using Loop = std::vector<Vec2>;
 
-double shoelace(const Loop& L) {
-  double twice = 0;
-  for (std::size_t i = 1; i + 1 < L.size(); ++i) twice += cross(L[i] - L[0], L[i + 1] - L[0]);
-  return twice / 2;
-}
 
 double polygon_area(const std::vector<Loop>& loops) {  // outer CCW, holes CW
   double a = 0;

@@ -667,4 +667,10 @@ std::string describe_polyhedron(std::uint64_t seed, const PolyhedronOptions& opt
   return s.str();
 }
 
+double shoelace(const std::vector<Vec2>& loop) {
+  double twice = 0;
+  for (std::size_t i = 1; i + 1 < loop.size(); ++i) twice += cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
+  return twice / 2;
+}
+
 }  // namespace pqmesh::test

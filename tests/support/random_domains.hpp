@@ -111,4 +111,9 @@ Plc3 random_polyhedron(std::uint64_t seed, const PolyhedronOptions& options = {}
 std::string describe_polygon(std::uint64_t seed, const PolygonOptions& options = {});
 std::string describe_polyhedron(std::uint64_t seed, const PolyhedronOptions& options = {});
 
+// Independent area oracle for the property tests: the shoelace sum, each term
+// relative to the loop's first vertex (less cancellation for translated
+// polygons). Positive for a counter-clockwise loop.
+double shoelace(const std::vector<Vec2>& loop);
+
 }  // namespace pqmesh::test
