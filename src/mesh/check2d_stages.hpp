@@ -29,6 +29,10 @@ inline bool in_box(Vec2 p, Vec2 a, Vec2 b) {
 // p on the closed segment ab (exact).
 inline bool on_segment(Vec2 p, Vec2 a, Vec2 b) { return in_box(p, a, b) && orient2d(a, b, p) == Sign::Zero; }
 
+// Rounded Steiner points on slanted segments: see within_ulp_of_segment in
+// src/predicates/predicates.hpp and docs/ALGORITHM.md §5.
+inline bool near_segment(Vec2 p, Vec2 a, Vec2 b) { return within_ulp_of_segment(p, a, b); }
+
 class Checker2 {
  public:
   Checker2(const TriMesh2& mesh, const CheckOptions& options, CheckReport& report);

@@ -13,6 +13,10 @@
 // Tie-break: the predicates report Zero honestly. A caller that must decide a
 // degenerate case does so by a symbolic perturbation documented at the call
 // site (docs/ALGORITHM.md lists them), never by a tolerance.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "pqmesh/vec.hpp"
 
 namespace pqmesh {
@@ -54,5 +58,29 @@ Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 // Sign of a - b for two coordinates (trivially exact; named for clarity).
 constexpr Sign compare(double a, double b) { return a > b ? Sign::Positive : (a < b ? Sign::Negative : Sign::Zero); }
+
+// p is a faithful rounding of a point of the closed segment ab: the segment
+// meets the closed "ulp box" [pred(p.x), succ(p.x)] x [pred(p.y), succ(p.y)]
+// (pred/succ: the neighbouring doubles). A mesher that puts a Steiner point on
+// a slanted input segment cannot, in general, store it exactly (the exact
+// point has no double coordinates); it stores a rounding of it, and this is
+// the rule by which the checker (src/mesh) accepts it as lying on the
+// segment (docs/ALGORITHM.md §5). Exact: a separating-axis test with the two
+// box axes and the segment's normal, the latter by orient2d on the corners.
+inline bool within_ulp_of_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Vec2 lo{std::nextafter(p.x, -inf), std::nextafter(p.y, -inf)};
+  const Vec2 hi{std::nextafter(p.x, inf), std::nextafter(p.y, inf)};
+  if (hi.x < std::min(a.x, b.x) || lo.x > std::max(a.x, b.x) || hi.y < std::min(a.y, b.y) ||
+      lo.y > std::max(a.y, b.y))
+    return false;
+  int pos = 0, neg = 0;
+  for (const Vec2 c : {lo, Vec2{hi.x, lo.y}, hi, Vec2{lo.x, hi.y}}) {
+    const Sign s = orient2d(a, b, c);
+    pos += s == Sign::Positive;
+    neg += s == Sign::Negative;
+  }
+  return pos < 4 && neg < 4;
+}
 
 }  // namespace pqmesh

@@ -1,0 +1,117 @@
+#pragma once
+// The triangulation data structure behind constrained_delaunay() (internal).
+//
+// Storage: one flat array of small triangles, no per-triangle allocation.
+// Triangle t has vertices v[0], v[1], v[2] in counter-clockwise order. Its
+// edge i is the edge opposite v[i], directed from v[i+1] to v[i+2] (indices
+// mod 3); half-edge h = 4 t + i names it (he(t, i)), and n[i] is the half-edge of the
+// neighbouring triangle across it (the same edge, directed the other way).
+//
+// Ghost vertex: kGhost (-1) closes the surface. Every convex hull edge u -> v
+// (interior on its right, seen as an edge of the ghost triangle) carries a
+// ghost triangle (u, v, kGhost), so the triangles form a triangulated sphere
+// and every half-edge has a neighbour. Invariants between operations:
+//   - real triangles (no ghost vertex) have orient2d > 0 and tile the convex
+//     hull of the inserted points; hull vertices that are collinear with their
+//     hull neighbours stay hull vertices (no zero-area triangle is made);
+//   - n[] is an involution on half-edges: n(n(h)) == h;
+//   - in the Delaunay phase every edge is locally Delaunay with the ghost
+//     rule below; after constraint insertion every non-constraint edge is.
+//
+// Ghost rule (the "circumcircle" of a ghost triangle (u, v, g) is the open
+// half plane left of u -> v): a point p is strictly inside it iff
+// orient2d(u, v, p) > 0. Points exactly on the hull line are never inside, so
+// flips never create zero-area triangles.
+//
+// Triangle slots are never freed: a 1-3 split adds two, a 2-4 split adds two,
+// a flip reuses its two slots. With n points and the ghost the sphere has
+// 2 (n + 1) - 4 triangles at the end, reserved up front.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::cdt2d::detail {
+
+inline constexpr int kGhost = -1;
+
+constexpr int next3(int i) { return i == 2 ? 0 : i + 1; }
+constexpr int prev3(int i) { return i == 0 ? 2 : i - 1; }
+// Half-edge h = 4 t + i (edge i of triangle t; shifts instead of divisions).
+constexpr int he(int t, int i) { return (t << 2) | i; }
+constexpr int tri_of(int h) { return h >> 2; }
+constexpr int edge_of(int h) { return h & 3; }
+
+struct Tri {
+  int v[3];
+  int n[3];
+};
+
+class Triangulation {
+ public:
+  explicit Triangulation(const std::vector<Vec2>& points);
+
+  // Phase 1: Delaunay triangulation of all points, inserted in input order
+  // (triangulation.cpp). Returns false when there are fewer than three points
+  // or all points are collinear (then there is no triangle). Throws
+  // InternalError on duplicate points.
+  bool build_delaunay();
+
+  // Phase 2 (constraints.cpp): make a -> b a chain of constrained edges and
+  // restore the constrained Delaunay property. Records the directed pieces.
+  void insert_constraint(int a, int b);
+
+  // Phase 3 (flood_fill.cpp): per triangle, 1 when on the inside (flood fill
+  // from the left of every constraint piece), else 0.
+  std::vector<std::uint8_t> inside_triangles() const;
+
+  int triangle_count() const { return static_cast<int>(tris_.size()); }
+  const Tri& tri(int t) const { return tris_[t]; }
+  bool is_ghost(int t) const { return tris_[t].v[0] < 0 || tris_[t].v[1] < 0 || tris_[t].v[2] < 0; }
+  bool constrained(int h) const { return !cons_.empty() && ((cons_[tri_of(h)] >> (edge_of(h))) & 1u) != 0; }
+
+ private:
+  struct Location {
+    int t = -1;      // the triangle found
+    int edge = -1;   // >= 0: the point lies in the relative interior of this edge of t
+  };
+
+  // triangulation.cpp
+  void make_first_triangle(int a, int b, int c);
+  Location locate(int p);
+  void insert_point(int p);
+  void split_triangle(int t, int p);
+  void split_edge(int h, int p);
+  void legalize(int p);
+  int random3();
+
+  // shared helpers
+  void link(int h, int k) {
+    tris_[tri_of(h)].n[edge_of(h)] = k;
+    tris_[tri_of(k)].n[edge_of(k)] = h;
+  }
+  void flip(int h);  // see triangulation.cpp
+
+  // constraints.cpp
+  void begin_constraints();
+  void flip_tracked(int h);
+  int find_half_edge(int u, int v) const;
+  void set_constrained(int h);
+  int index_in(int t, int v) const;
+  void sloan_flips(int a, int b);
+  void restore_delaunay();
+
+  const std::vector<Vec2>& pts_;
+  std::vector<Tri> tris_;
+  std::vector<std::uint8_t> cons_;   // bit i of cons_[t]: edge i of t is constrained (phase 2 only)
+  std::vector<int> vtri_;            // phase 2: a triangle incident to each vertex
+  std::vector<std::array<int, 2>> pieces_;   // constrained pieces, directed as given
+  std::vector<int> stack_;                   // phase 1: triangles around the new point to check
+  std::vector<std::array<int, 2>> crossed_;  // phase 2 scratch: edges crossed by a piece
+  std::vector<std::array<int, 2>> fresh_;    // phase 2 scratch: edges to re-check for Delaunay
+  int last_ = 0;                             // a real triangle made by the latest insertion
+  std::uint64_t rng_ = 0x9e3779b97f4a7c15ull;
+};
+
+}  // namespace pqmesh::cdt2d::detail

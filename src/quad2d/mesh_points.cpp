@@ -1,0 +1,279 @@
+// Mesh vertices from the finished quadtree; see mesh_points.hpp.
+#include "quad2d/mesh_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include "pqmesh/errors.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::quad2d {
+
+namespace {
+
+struct Corner {
+  double x, y;
+  std::int32_t leaf;
+};
+
+struct Tagged {
+  Vec2 p;
+  int segment = -1;  // the input segment the point lies on, or -1
+  int vertex = -1;   // the input vertex it is, or -1
+};
+
+struct Snap {
+  double x, y;
+  int segment;
+  friend bool operator<(const Snap& a, const Snap& b) { return std::tie(a.x, a.y, a.segment) < std::tie(b.x, b.y, b.segment); }
+};
+
+// Moves a constructed point by single ulps towards the line ab until it is a
+// faithful rounding of a point of the segment (within_ulp_of_segment). Only y
+// moves when keep_x (the point is on a vertical box side x = const, exact),
+// only x when keep_y, else the coordinate along which the line's normal is
+// larger. Constructions are a few ulps off, so this ends within a few steps.
+Vec2 settle_on_segment(Vec2 p, Vec2 a, Vec2 b, bool keep_x, bool keep_y) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nx = a.y - b.y, ny = b.x - a.x;  // left normal of ab
+  const bool move_x = keep_y || (!keep_x && std::fabs(nx) >= std::fabs(ny));
+  for (int step = 0; step < 4096; ++step) {
+    if (within_ulp_of_segment(p, a, b)) return p;
+    const Sign s = orient2d(a, b, p);  // Positive: p is on the left (normal side)
+    const double dir = (s == Sign::Positive) ? -1.0 : 1.0;
+    if (move_x)
+      p.x = std::nextafter(p.x, dir * nx > 0 ? inf : -inf);
+    else
+      p.y = std::nextafter(p.y, dir * ny > 0 ? inf : -inf);
+  }
+  throw InternalError("quad2d: cannot round a point onto an input segment");
+}
+
+// Squared distance from p to the closed segment ab; t is the parameter of the
+// nearest point (clamped to [0, 1]).
+double distance2(Vec2 p, Vec2 a, Vec2 b, double& t) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double len2 = dx * dx + dy * dy;
+  t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2;
+  t = std::clamp(t, 0.0, 1.0);
+  const double qx = a.x + t * dx - p.x, qy = a.y + t * dy - p.y;
+  return qx * qx + qy * qy;
+}
+
+bool strictly_inside(Vec2 p, const Rect& r) { return p.x > r.lo.x && p.x < r.hi.x && p.y > r.lo.y && p.y < r.hi.y; }
+
+class PointGenerator {
+ public:
+  PointGenerator(const QuadtreeBuilder& b, QuadMeshStats& stats) : b_(b), d_(b.domain()), stats_(stats) {}
+
+  MeshPoints run() {
+    collect_corners();
+    place_corners();
+    place_crossings();
+    return assemble();
+  }
+
+ private:
+  Vec2 vertex(int v) const { return d_.pslg.vertices[static_cast<std::size_t>(v)]; }
+
+  void collect_corners() {
+    for (const std::int32_t n : b_.tree().leaves()) {
+      if (!b_.data(n).has_component) continue;
+      leaves_.push_back(n);
+      const Square s = b_.square(n);
+      for (int k = 0; k < 4; ++k)
+        corners_.push_back({s.lo.x + (k & 1) * s.side, s.lo.y + (k >> 1) * s.side, n});
+    }
+    std::sort(corners_.begin(), corners_.end(),
+              [](const Corner& a, const Corner& c) { return std::tie(a.x, a.y, a.leaf) < std::tie(c.x, c.y, c.leaf); });
+    for (const Corner& c : corners_)
+      if (by_x_.empty() || by_x_.back().x != c.x || by_x_.back().y != c.y) by_x_.push_back({c.x, c.y});
+    by_y_ = by_x_;
+    std::sort(by_y_.begin(), by_y_.end(), [](Vec2 a, Vec2 c) { return std::tie(a.y, a.x) < std::tie(c.y, c.x); });
+  }
+
+  // Corners: warp, keep, or drop (docs/ALGORITHM.md §8.5).
+  void place_corners() {
+    std::vector<int> segs;
+    for (std::size_t i = 0; i < corners_.size();) {
+      std::size_t j = i;
+      while (j < corners_.size() && corners_[j].x == corners_[i].x && corners_[j].y == corners_[i].y) ++j;
+      place_corner(i, j, segs);
+      i = j;
+    }
+    std::sort(snaps_.begin(), snaps_.end());
+  }
+
+  void place_corner(std::size_t first, std::size_t last, std::vector<int>& segs) {
+    const Vec2 c{corners_[first].x, corners_[first].y};
+    double h = std::numeric_limits<double>::infinity(), h_max = 0;
+    segs.clear();
+    std::int32_t edge_leaf = -1;
+    // Every leaf whose closed square holds c, also those of which c is a
+    // hanging corner (a point of a side, not a corner): their size matters.
+    (void)last;
+    b_.tree().leaves_containing({c.x, c.y}, around_);
+    for (const std::int32_t n : around_) {
+      const NodeData& nd = b_.data(n);
+      if (!nd.has_component) continue;
+      const int owner = nd.vertex_owner;
+      if (owner >= 0 && strictly_inside(c, b_.vertex_box(owner))) return;  // inside a united vertex box
+      h = std::min(h, b_.tree().side(n));
+      h_max = std::max(h_max, b_.tree().side(n));
+      // Every edge meeting the squares (all components, Euclidean): a corner
+      // that lies on the far side of a thin exterior slot is ON the edge there.
+      for (const LoopEdge e : nd.square_edges)
+        segs.push_back(d_.loop_segments[static_cast<std::size_t>(e.loop)][static_cast<std::size_t>(e.index)]);
+      if (!nd.square_edges.empty()) edge_leaf = n;
+    }
+    std::sort(segs.begin(), segs.end());
+    segs.erase(std::unique(segs.begin(), segs.end()), segs.end());
+    // Warping radius: a quarter of the largest box at c, but at most half the
+    // smallest (docs/ALGORITHM.md §8.5): two corners one grid step apart are
+    // then never both warped onto nearly the same point of an edge.
+    const double r = std::min(h_max / 4, h / 2), r2 = r * r;
+    bool warped = false;
+    for (const int s : segs) {
+      const auto& seg = d_.pslg.segments[static_cast<std::size_t>(s)];
+      const Vec2 a = vertex(seg[0]), e = vertex(seg[1]);
+      double t = 0;
+      if (!(distance2(c, a, e, t) < r2)) continue;
+      warped = true;
+      snaps_.push_back({c.x, c.y, s});
+      if (t <= 0 || t >= 1) continue;  // nearest point is an input vertex, already a mesh vertex
+      Vec2 p = c;
+      if (orient2d(a, e, c) != Sign::Zero) p = settle_on_segment({a.x + t * (e.x - a.x), a.y + t * (e.y - a.y)}, a, e, false, false);
+      points_.push_back({p, s, -1});
+      ++stats_.warped;
+    }
+    if (warped) return;
+    if (edge_leaf >= 0) {
+      const SquareComponents sc = b_.components_of(edge_leaf);
+      if (locate_component(d_, sc, c) < 0) return;  // outside P
+    }
+    points_.push_back({c, -1, -1});
+  }
+
+  bool snapped(Vec2 c, int segment) const { return std::binary_search(snaps_.begin(), snaps_.end(), Snap{c.x, c.y, segment}); }
+
+  // Crossings of input edges with leaf sides (docs/ALGORITHM.md §8.5).
+  void place_crossings() {
+    for (const std::int32_t n : leaves_) {
+      const NodeData& nd = b_.data(n);
+      if (nd.segments.empty()) continue;
+      const Square sq = b_.square(n);
+      const double x0 = sq.lo.x, y0 = sq.lo.y, x1 = x0 + sq.side, y1 = y0 + sq.side;
+      for (const int s : nd.segments) {
+        crossing(s, true, x0, y0, y1, nd.vertex_owner);
+        crossing(s, true, x1, y0, y1, nd.vertex_owner);
+        crossing(s, false, y0, x0, x1, nd.vertex_owner);
+        crossing(s, false, y1, x0, x1, nd.vertex_owner);
+      }
+    }
+  }
+
+  // Segment s against the box side {x = at, lo <= y <= hi} (vertical) or
+  // {y = at, lo <= x <= hi}.
+  void crossing(int s, bool vertical, double at, double lo, double hi, int owner) {
+    const auto& seg = d_.pslg.segments[static_cast<std::size_t>(s)];
+    Vec2 a = vertex(seg[0]), e = vertex(seg[1]);
+    const Rect side = vertical ? Rect{{at, lo}, {at, hi}} : Rect{{lo, at}, {hi, at}};
+    if (!segment_meets_rect(a, e, side)) return;
+    const auto along = [vertical](Vec2 p) { return vertical ? p.x : p.y; };
+    const auto across = [vertical](Vec2 p) { return vertical ? p.y : p.x; };
+    if (along(a) == at || along(e) == at) return;  // an endpoint on the side (or the edge runs along it)
+    if (along(a) > along(e)) std::swap(a, e);         // canonical: the same double from every box
+    const double t = (at - along(a)) / (along(e) - along(a));
+    const double v = across(a) + t * (across(e) - across(a));
+    Vec2 p = vertical ? Vec2{at, v} : Vec2{v, at};
+    p = settle_on_segment(p, a, e, vertical, !vertical);
+    if (owner >= 0 && strictly_inside(p, b_.vertex_box(owner))) return;
+    // The corners on this line around p.
+    const std::vector<Vec2>& line = vertical ? by_x_ : by_y_;
+    const auto key_less = [vertical](Vec2 u, Vec2 w) {
+      return vertical ? std::tie(u.x, u.y) < std::tie(w.x, w.y) : std::tie(u.y, u.x) < std::tie(w.y, w.x);
+    };
+    auto it = std::upper_bound(line.begin(), line.end(), p, key_less);
+    if (it == line.begin() || it == line.end()) return;
+    const Vec2 c2 = *it, c1 = *(it - 1);
+    if (along(c1) != at || along(c2) != at) return;  // rounding carried p off the side's range
+    if (across(c1) == across(p)) return;            // p is a corner: the corner was warped
+    if (snapped(c1, s) || snapped(c2, s)) return;
+    points_.push_back({p, s, -1});
+    ++stats_.edge_points;
+  }
+
+  MeshPoints assemble() {
+    for (std::size_t v = 0; v < d_.pslg.vertices.size(); ++v) points_.push_back({d_.pslg.vertices[v], -1, static_cast<int>(v)});
+    std::vector<char> on_loop(d_.pslg.vertices.size(), 0);
+    for (const auto& loop : d_.loops)
+      for (const int v : loop) on_loop[static_cast<std::size_t>(v)] = 1;
+    std::sort(points_.begin(), points_.end(), [](const Tagged& a, const Tagged& c) {
+      return std::tie(a.p.x, a.p.y, a.vertex, a.segment) < std::tie(c.p.x, c.p.y, c.vertex, c.segment);
+    });
+    MeshPoints out;
+    out.segment_chain.assign(d_.pslg.segments.size(), {});
+    std::vector<int> vertex_point(d_.pslg.vertices.size(), -1);
+    for (std::size_t i = 0; i < points_.size();) {
+      std::size_t j = i;
+      int vertex_id = -1;
+      while (j < points_.size() && points_[j].p.x == points_[i].p.x && points_[j].p.y == points_[i].p.y) {
+        vertex_id = std::max(vertex_id, points_[j].vertex);
+        ++j;
+      }
+      if (vertex_id >= 0 && !on_loop[static_cast<std::size_t>(vertex_id)]) vertex_id = -2;  // isolated input vertex
+      if (vertex_id == -2 && j - i == 1) {  // isolated vertices are not meshed (docs/ALGORITHM.md §8.5)
+        i = j;
+        continue;
+      }
+      const int id = static_cast<int>(out.points.size());
+      out.points.push_back(points_[i].p);
+      out.input_vertex.push_back(vertex_id >= 0 ? vertex_id : -1);
+      if (vertex_id >= 0) vertex_point[static_cast<std::size_t>(vertex_id)] = id;
+      for (std::size_t k = i; k < j; ++k)
+        if (points_[k].segment >= 0 && points_[k].vertex < 0) {
+          auto& chain = out.segment_chain[static_cast<std::size_t>(points_[k].segment)];
+          if (chain.empty() || chain.back() != id) chain.push_back(id);
+        }
+      i = j;
+    }
+    for (std::size_t s = 0; s < d_.pslg.segments.size(); ++s) {
+      const auto& seg = d_.pslg.segments[s];
+      const int pa = vertex_point[static_cast<std::size_t>(seg[0])], pb = vertex_point[static_cast<std::size_t>(seg[1])];
+      if (pa < 0 || pb < 0) throw InternalError("quad2d: an input vertex of segment " + std::to_string(s) + " was lost");
+      auto& chain = out.segment_chain[s];
+      const Vec2 a = out.points[static_cast<std::size_t>(pa)], e = out.points[static_cast<std::size_t>(pb)];
+      const auto param = [&](int id) {
+        const Vec2 p = out.points[static_cast<std::size_t>(id)];
+        return (p.x - a.x) * (e.x - a.x) + (p.y - a.y) * (e.y - a.y);
+      };
+      std::sort(chain.begin(), chain.end(), [&](int u, int w) { return param(u) < param(w); });
+      chain.erase(std::remove(chain.begin(), chain.end(), pa), chain.end());
+      chain.erase(std::remove(chain.begin(), chain.end(), pb), chain.end());
+      chain.insert(chain.begin(), pa);
+      chain.push_back(pb);
+    }
+    return out;
+  }
+
+  const QuadtreeBuilder& b_;
+  const Domain2& d_;
+  QuadMeshStats& stats_;
+  std::vector<std::int32_t> leaves_;
+  std::vector<Corner> corners_;
+  std::vector<Vec2> by_x_, by_y_;  // distinct corners sorted by (x, y) and by (y, x)
+  std::vector<Snap> snaps_;
+  std::vector<std::int32_t> around_;
+  std::vector<Tagged> points_;
+};
+
+}  // namespace
+
+MeshPoints generate_points(const QuadtreeBuilder& builder, QuadMeshStats& stats) {
+  return PointGenerator(builder, stats).run();
+}
+
+}  // namespace pqmesh::quad2d

@@ -1,0 +1,128 @@
+// The 2D quadtree mesher's driver: quadtree phases, mesh vertices, then the
+// triangulation of the boxes (docs/ALGORITHM.md §8).
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <numeric>
+
+#include "cdt2d/constrained_delaunay.hpp"
+#include "pqmesh/errors.hpp"
+#include "pqmesh/quadmesh.hpp"
+#include "quad2d/mesh_points.hpp"
+#include "quad2d/quadtree_builder.hpp"
+#include "quad2d/size_function.hpp"
+
+namespace pqmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Interleaves the low 21 bits of x and y (x least significant).
+std::uint64_t morton(std::uint32_t x, std::uint32_t y) {
+  std::uint64_t key = 0;
+  for (int b = 0; b < 21; ++b)
+    key |= (static_cast<std::uint64_t>((x >> b) & 1u) << (2 * b)) | (static_cast<std::uint64_t>((y >> b) & 1u) << (2 * b + 1));
+  return key;
+}
+
+// A spatially coherent order of the points (z-order on a 2^21 grid over the
+// bounding box, ties by coordinates): the triangulation's point location walks
+// from the last triangle, so this keeps insertion near linear.
+std::vector<int> z_order(const std::vector<Vec2>& pts, Vec2 lo, Vec2 hi) {
+  const double span = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
+  const double scale = static_cast<double>((1u << 21) - 1) / span;
+  std::vector<std::pair<std::uint64_t, int>> keyed(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto qx = static_cast<std::uint32_t>(std::clamp((pts[i].x - lo.x) * scale, 0.0, 2097151.0));
+    const auto qy = static_cast<std::uint32_t>(std::clamp((pts[i].y - lo.y) * scale, 0.0, 2097151.0));
+    keyed[i] = {morton(qx, qy), static_cast<int>(i)};
+  }
+  // Points are sorted by (x, y) already, so ties by index are ties by coordinates.
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> order(pts.size());
+  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+  return order;
+}
+
+// The region attribute for the triangles: P has no internal segments, so it is
+// one region; its attribute is that of the first region point inside P.
+bool region_attribute(const Domain2& d, int& attribute) {
+  for (const Region2& r : d.pslg.regions)
+    if (locate(d, r.point) == Location::Inside) {
+      attribute = static_cast<int>(r.attribute);
+      return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) {
+  const quad2d::SizeFunction2 size(options);
+  QuadMeshResult result;
+  QuadMeshStats& stats = result.stats;
+
+  auto t0 = Clock::now();
+  quad2d::QuadtreeBuilder builder(domain, size, options.protect_edges, stats);
+  builder.build();
+  stats.seconds_tree = seconds_since(t0);
+
+  t0 = Clock::now();
+  const quad2d::MeshPoints mp = quad2d::generate_points(builder, stats);
+  stats.seconds_points = seconds_since(t0);
+
+  t0 = Clock::now();
+  // Renumber the points in z-order; the mesh keeps that order.
+  const std::vector<int> order = z_order(mp.points, domain.bbox_min, domain.bbox_max);
+  std::vector<int> new_id(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) new_id[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+  cdt2d::CdtInput in;
+  in.points.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) in.points[i] = mp.points[static_cast<std::size_t>(order[i])];
+  TriMesh2& mesh = result.mesh;
+  const bool seg_markers = !domain.pslg.segment_markers.empty();
+  // Boundary constraints: every loop side, as its chain of points, interior on the left.
+  for (std::size_t l = 0; l < domain.loops.size(); ++l) {
+    const auto& loop = domain.loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int s = domain.loop_segments[l][k];
+      const auto& chain = mp.segment_chain[static_cast<std::size_t>(s)];
+      const bool forward = domain.pslg.segments[static_cast<std::size_t>(s)][0] == loop[k];
+      for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
+        int u = new_id[static_cast<std::size_t>(chain[j])], w = new_id[static_cast<std::size_t>(chain[j + 1])];
+        if (!forward) std::swap(u, w);
+        in.constraints.push_back({u, w});
+        mesh.edges.push_back({u, w});
+        if (seg_markers) mesh.edge_markers.push_back(domain.pslg.segment_markers[static_cast<std::size_t>(s)]);
+      }
+    }
+  }
+  cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
+  stats.seconds_triangulate = seconds_since(t0);
+
+  mesh.vertices = std::move(in.points);
+  mesh.triangles = std::move(out.triangles);
+  if (!domain.pslg.vertex_markers.empty()) {
+    // Input vertices keep their marker; Steiner points on a segment take the
+    // segment's marker (Triangle's convention); interior points get 0.
+    mesh.vertex_markers.assign(mesh.vertices.size(), 0);
+    for (std::size_t i = 0; i < mp.points.size(); ++i)
+      if (mp.input_vertex[i] >= 0)
+        mesh.vertex_markers[static_cast<std::size_t>(new_id[i])] =
+            domain.pslg.vertex_markers[static_cast<std::size_t>(mp.input_vertex[i])];
+    if (seg_markers)
+      for (std::size_t s = 0; s < mp.segment_chain.size(); ++s) {
+        const auto& chain = mp.segment_chain[s];
+        for (std::size_t j = 1; j + 1 < chain.size(); ++j)
+          mesh.vertex_markers[static_cast<std::size_t>(new_id[static_cast<std::size_t>(chain[j])])] =
+              domain.pslg.segment_markers[s];
+      }
+  }
+  int attribute = 0;
+  if (region_attribute(domain, attribute)) mesh.triangle_markers.assign(mesh.triangles.size(), attribute);
+  return result;
+}
+
+}  // namespace pqmesh
