@@ -131,10 +131,12 @@ class PointGenerator {
     }
     std::sort(segs.begin(), segs.end());
     segs.erase(std::unique(segs.begin(), segs.end()), segs.end());
-    // Warping radius: a quarter of the largest box at c, but at most half the
-    // smallest (docs/ALGORITHM.md §8.5): two corners one grid step apart are
-    // then never both warped onto nearly the same point of an edge.
-    const double r = std::min(h_max / 4, h / 2), r2 = r * r;
+    // Warping radius: a quarter of the largest box at c, but at most a third of
+    // the smallest (docs/ALGORITHM.md §8.5). Two corners one grid step h apart
+    // are both warped onto an edge only if it makes an angle phi with their
+    // side where h cos(phi) < 2r, and their images are h sin(phi) apart: with
+    // r <= h/3 that is more than 0.74 h.
+    const double r = std::min(h_max / 4, h / 3), r2 = r * r;
     bool warped = false;
     for (const int s : segs) {
       const auto& seg = d_.pslg.segments[static_cast<std::size_t>(s)];
