@@ -20,6 +20,33 @@ const std::vector<Command>& commands() {
        "\n"
        "Exit 0 when the domain is valid, 2 with the offending ids and file line when it is not.\n",
        run_info},
+      {"mesh", "mesh a 2D domain (quadtree mesher, bounded angles); check and write the mesh",
+       "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--protect-edges]\n"
+       "                   [--format F] [--quiet]\n"
+       "\n"
+       "Meshes a 2D polygon with holes (Triangle .poly) with the quadtree mesher, the 2D analog of\n"
+       "thesis ch. 4 (docs/ALGORITHM.md section 8): every angle is at least min(C * alpha, THETA0),\n"
+       "alpha the smallest input angle, and the triangle count is within a constant factor of the\n"
+       "fewest a mesh with bounded angles needs. The mesh is checked as by 'pqmesh check' before it is\n"
+       "written; a mesh that fails is a bug (exit 70) and nothing is written.\n"
+       "\n"
+       "The summary gives alpha, the bound, the smallest and largest angle achieved, the counts, the\n"
+       "size estimate I = integral over P of 1/lfs^2 (Euclidean local feature size, pqmesh/lfs.hpp)\n"
+       "with triangles / I, the mesher's counters (leaves, duplicates, splits by cause, vertex boxes,\n"
+       "centered, warped), timings and the check result.\n"
+       "  -o, --output OUTPUT  the mesh file; its extension gives the format as for 'pqmesh convert'\n"
+       "                       (.vtu, .msh, .mesh, .node writes .node/.ele/.poly, .svg)\n"
+       "  --format F           vtu, msh, msh22, mesh, node or svg, whatever OUTPUT's extension\n"
+       "  --max-size S         no quadtree box side longer than S (S > 0)\n"
+       "  --size-field FILE    desired sizes at points, one 'x y size' per line ('#' comments); the\n"
+       "                       size asked for at x is the min over the points of size + |x - point|\n"
+       "  --protect-edges      thesis 4.1.4-4.1.5 edge protection: split every box on an input edge\n"
+       "                       once more (off by default: more triangles, no better angles)\n"
+       "  --quiet              print nothing on success\n"
+       "\n"
+       "3D input is not meshed yet (issue 5): exit 2. Exit 2 also for an invalid domain or size field\n"
+       "(the message names the file line), 64 for a bad command line, 70 for an internal error.\n",
+       run_mesh},
       {"check", "check a mesh against its input domain (validity report)",
        "usage: pqmesh check MESH --domain INPUT [--no-boundary-steiner] [--max-issues N]\n"
        "\n"

@@ -22,6 +22,7 @@ struct Command {
 };
 
 int run_info(const std::vector<std::string>& args);
+int run_mesh(const std::vector<std::string>& args);
 int run_check(const std::vector<std::string>& args);
 int run_quality(const std::vector<std::string>& args);
 int run_convert(const std::vector<std::string>& args);

@@ -4,9 +4,11 @@
 // the 2D meshers use it to triangulate point sets produced by the quadtree).
 //
 // Algorithm (details and invariants in triangulation.hpp):
-//   1. Delaunay triangulation by incremental insertion in input order with
-//      Lawson flips; point location walks from the most recently created
-//      triangle, so spatially coherent orders (z-order) are fast. The convex
+//   1. Delaunay triangulation by incremental insertion with Lawson flips, in
+//      rounds of decreasing stride over the input order (every 8^k-th point
+//      first; each round keeps the input order). Point location walks from
+//      the most recently created triangle, so spatially coherent orders
+//      (z-order) are fast. The convex
 //      hull is closed by a ghost vertex: every hull edge carries a ghost
 //      triangle, so points outside the current hull need no special case.
 //   2. Each constraint is inserted by edge flips (Sloan 1993) across the
@@ -28,7 +30,9 @@
 // Constraints through points: a constraint that passes exactly through
 // another input point (exactly collinear, strictly between its ends) is split
 // there; both parts become constrained edges with the original direction.
-// Overlapping collinear constraints are therefore allowed.
+// Overlapping collinear constraints are therefore allowed. For keep_inside, a
+// constraint given in both directions (a -> b and b -> a) is an interior
+// edge: the inside lies on both of its sides.
 //
 // Errors (pqmesh::InternalError, the caller's invariants are broken):
 //   - two input points with identical coordinates;
@@ -39,7 +43,8 @@
 //     region that is unbounded (the fill leaves the convex hull).
 //
 // Degenerate sizes: fewer than three points, or all points on one line, give
-// no triangles (after the duplicate check).
+// no triangles (after the duplicate check); keep_inside without constraints
+// keeps nothing. At most 2^27 points (half-edge ids are ints).
 #include <array>
 #include <vector>
 

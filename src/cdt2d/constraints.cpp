@@ -13,6 +13,8 @@
 // open segment A-B, so every edge of the region either crosses it or not.)
 // Finally Lawson flips of non-constraint edges with a strict incircle test
 // restore the constrained Delaunay property.
+// (S. W. Sloan, "A fast algorithm for generating constrained Delaunay
+// triangulations", Computers & Structures 47, 1993.)
 #include <string>
 
 #include "cdt2d/triangulation.hpp"

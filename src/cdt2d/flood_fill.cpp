@@ -5,7 +5,10 @@
 // outside triangle on its right. The fill starts from all left triangles and
 // crosses only non-constraint edges. A valid loop set (interior on the left
 // of every loop) never lets the fill reach a right triangle or a ghost
-// triangle; either event means the loops are inconsistent and throws.
+// triangle; either event means the loops are inconsistent and throws. A
+// constraint given in both directions is an interior edge (inside on both
+// sides).
+#include <algorithm>
 #include <string>
 
 #include "cdt2d/triangulation.hpp"
@@ -20,9 +23,19 @@ std::vector<std::uint8_t> Triangulation::inside_triangles() const {
   auto piece_name = [](const std::array<int, 2>& pc) {
     return std::to_string(pc[0]) + "->" + std::to_string(pc[1]);
   };
+  // A piece given in both directions has the inside on both sides (an
+  // interior constraint edge): its right side is no outside seed.
+  auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  std::vector<std::uint64_t> keys;
+  keys.reserve(pieces_.size());
+  for (const auto& pc : pieces_) keys.push_back(key(pc[0], pc[1]));
+  std::sort(keys.begin(), keys.end());
   for (const auto& pc : pieces_) {
     const int h = find_half_edge(pc[0], pc[1]);
     if (h < 0) throw InternalError("constrained_delaunay: constraint piece " + piece_name(pc) + " is no edge");
+    if (std::binary_search(keys.begin(), keys.end(), key(pc[1], pc[0]))) continue;
     label[tri_of(tris_[tri_of(h)].n[edge_of(h)])] = kOutside;
   }
   for (const auto& pc : pieces_) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "cdt2d/insertion_order.hpp"
 #include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 
@@ -55,16 +56,23 @@ void Triangulation::make_first_triangle(int a, int b, int c) {
 }
 
 bool Triangulation::build_delaunay() {
+  // Half-edge ids 4 t + i must fit in an int: 2 n triangles < 2^29.
+  if (pts_.size() >= (std::size_t{1} << 27))
+    throw InternalError("constrained_delaunay: more than 2^27 points are not supported");
   const int n = static_cast<int>(pts_.size());
   if (n < 3) {
     check_duplicates_sorted(pts_);
     return false;
   }
-  if (pts_[0] == pts_[1]) throw_duplicate(1, 0);
-  int third = -1;
+  // Position k of the insertion sequence inserts point id(k).
+  const std::vector<int> order = insertion_order(pts_);
+  auto id = [&](long k) { return order.empty() ? static_cast<int>(k) : order[static_cast<std::size_t>(k)]; };
+  const int p0 = id(0), p1 = id(1);
+  if (pts_[p0] == pts_[p1]) throw_duplicate(p1, p0);
+  long third = -1;
   Sign turn = Sign::Zero;
-  for (int k = 2; k < n && third < 0; ++k) {
-    turn = orient2d(pts_[0], pts_[1], pts_[k]);
+  for (long k = 2; k < n && third < 0; ++k) {
+    turn = orient2d(pts_[p0], pts_[p1], pts_[id(k)]);
     if (turn != Sign::Zero) third = k;
   }
   if (third < 0) {
@@ -72,10 +80,22 @@ bool Triangulation::build_delaunay() {
     return false;
   }
   tris_.reserve(2 * static_cast<std::size_t>(n) + 2);
-  if (turn == Sign::Positive) make_first_triangle(0, 1, third);
-  else make_first_triangle(1, 0, third);
-  for (int p = 2; p < n; ++p)
-    if (p != third) insert_point(p);
+  if (turn == Sign::Positive) make_first_triangle(p0, p1, id(third));
+  else make_first_triangle(p1, p0, id(third));
+  // Insertion in rounds of decreasing stride (a deterministic analogue of a
+  // biased randomized insertion order): round r inserts the positions that
+  // are multiples of kStride^r but not of kStride^(r+1). Each round keeps the
+  // spatially coherent order, so the walk stays short, while the coarse
+  // rounds spread points before the dense ones. Without them, an order that
+  // completes one region before its neighbour (z-order over parallel chains
+  // of close points) makes every insertion flip a long fan of triangles;
+  // with them such a fan is bounded by about kStride triangles.
+  constexpr long kStride = 8;
+  long top = 1;
+  while (top * kStride * 64 <= n) top *= kStride;
+  for (long stride = top; stride >= 1; stride /= kStride)
+    for (long k = 0; k < n; k += stride)
+      if ((stride == top || k % (stride * kStride) != 0) && k >= 2 && k != third) insert_point(id(k));
   return true;
 }
 

@@ -23,6 +23,16 @@ struct Tagged {
   Vec2 p;
   int segment = -1;  // the input segment the point lies on, or -1
   int vertex = -1;   // the input vertex it is, or -1
+  double scale = 0;  // points on a segment: the smallest box side where it was made
+};
+
+struct Crossing {
+  Vec2 p;          // on the segment, rounded (within_ulp_of_segment)
+  int segment;
+  Vec2 c1, c2;     // the corners around p on its box side, c1 below / left of c2
+  int owner;       // the vertex whose united box the side belongs to, or -1
+  bool vertical;   // the side is vertical (x constant)
+  double scale;    // |c2 - c1|
 };
 
 struct Snap {
@@ -63,7 +73,8 @@ double distance2(Vec2 p, Vec2 a, Vec2 b, double& t) {
   return qx * qx + qy * qy;
 }
 
-bool strictly_inside(Vec2 p, const Rect& r) { return p.x > r.lo.x && p.x < r.hi.x && p.y > r.lo.y && p.y < r.hi.y; }
+
+constexpr int kDropped = -3;
 
 class PointGenerator {
  public:
@@ -71,6 +82,7 @@ class PointGenerator {
 
   MeshPoints run() {
     collect_corners();
+    find_crossings();
     place_corners();
     place_crossings();
     return assemble();
@@ -78,6 +90,14 @@ class PointGenerator {
 
  private:
   Vec2 vertex(int v) const { return d_.pslg.vertices[static_cast<std::size_t>(v)]; }
+
+  // p is closer to input vertex v than Lemma 1's clearance (a construction
+  // compared with a threshold: either outcome is valid, docs/ALGORITHM.md §8.5).
+  bool too_close(Vec2 p, int v) const {
+    const Vec2 q = vertex(v);
+    const double c = b_.vertex_clearance(v);
+    return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) < c * c;
+  }
 
   void collect_corners() {
     for (const std::int32_t n : b_.tree().leaves()) {
@@ -120,7 +140,7 @@ class PointGenerator {
       const NodeData& nd = b_.data(n);
       if (!nd.has_component) continue;
       const int owner = nd.vertex_owner;
-      if (owner >= 0 && strictly_inside(c, b_.vertex_box(owner))) return;  // inside a united vertex box
+      if (owner >= 0 && too_close(c, owner)) return;  // Lemma 1: keep clear of the vertex
       h = std::min(h, b_.tree().side(n));
       h_max = std::max(h_max, b_.tree().side(n));
       // Every edge meeting the squares (all components, Euclidean): a corner
@@ -142,13 +162,14 @@ class PointGenerator {
       const auto& seg = d_.pslg.segments[static_cast<std::size_t>(s)];
       const Vec2 a = vertex(seg[0]), e = vertex(seg[1]);
       double t = 0;
-      if (!(distance2(c, a, e, t) < r2)) continue;
+      if (!(distance2(c, a, e, t) < r2) && !std::binary_search(forced_.begin(), forced_.end(), Snap{c.x, c.y, s}))
+        continue;
       warped = true;
       snaps_.push_back({c.x, c.y, s});
       if (t <= 0 || t >= 1) continue;  // nearest point is an input vertex, already a mesh vertex
       Vec2 p = c;
       if (orient2d(a, e, c) != Sign::Zero) p = settle_on_segment({a.x + t * (e.x - a.x), a.y + t * (e.y - a.y)}, a, e, false, false);
-      points_.push_back({p, s, -1});
+      points_.push_back({p, s, -1, h});
       ++stats_.warped;
     }
     if (warped) return;
@@ -161,8 +182,13 @@ class PointGenerator {
 
   bool snapped(Vec2 c, int segment) const { return std::binary_search(snaps_.begin(), snaps_.end(), Snap{c.x, c.y, segment}); }
 
-  // Crossings of input edges with leaf sides (docs/ALGORITHM.md §8.5).
-  void place_crossings() {
+  // Crossings of input edges with leaf sides (docs/ALGORITHM.md §8.5), each
+  // with the two corners around it on its side. Warping (thesis §4.3 in 2D):
+  // the corner nearer to the crossing is moved onto the edge, and the crossing
+  // itself is then not kept (the warped corner stands for it). A crossing
+  // exactly in the middle of its side, or whose nearer corner must stay clear
+  // of an input vertex (Lemma 1), is kept as a vertex instead.
+  void find_crossings() {
     for (const std::int32_t n : leaves_) {
       const NodeData& nd = b_.data(n);
       if (nd.segments.empty()) continue;
@@ -174,6 +200,29 @@ class PointGenerator {
         crossing(s, false, y0, x0, x1, nd.vertex_owner);
         crossing(s, false, y1, x0, x1, nd.vertex_owner);
       }
+    }
+    for (const Crossing& x : crossings_) {
+      const auto across = [&x](Vec2 p) { return x.vertical ? p.y : p.x; };
+      const double below = across(x.p) - across(x.c1), above = across(x.c2) - across(x.p);
+      if (below < above && !(x.owner >= 0 && too_close(x.c1, x.owner)))
+        forced_.push_back({x.c1.x, x.c1.y, x.segment});
+      else if (above < below && !(x.owner >= 0 && too_close(x.c2, x.owner)))
+        forced_.push_back({x.c2.x, x.c2.y, x.segment});
+    }
+    std::sort(forced_.begin(), forced_.end());
+  }
+
+  void place_crossings() {
+    std::sort(crossings_.begin(), crossings_.end(), [](const Crossing& u, const Crossing& w) {
+      return std::tie(u.p.x, u.p.y, u.segment) < std::tie(w.p.x, w.p.y, w.segment);
+    });
+    for (std::size_t i = 0; i < crossings_.size(); ++i) {
+      const Crossing& x = crossings_[i];
+      if (i > 0 && crossings_[i - 1].p.x == x.p.x && crossings_[i - 1].p.y == x.p.y && crossings_[i - 1].segment == x.segment)
+        continue;  // the same side seen from two boxes
+      if (snapped(x.c1, x.segment) || snapped(x.c2, x.segment)) continue;
+      points_.push_back({x.p, x.segment, -1, x.scale});
+      ++stats_.edge_points;
     }
   }
 
@@ -192,7 +241,7 @@ class PointGenerator {
     const double v = across(a) + t * (across(e) - across(a));
     Vec2 p = vertical ? Vec2{at, v} : Vec2{v, at};
     p = settle_on_segment(p, a, e, vertical, !vertical);
-    if (owner >= 0 && strictly_inside(p, b_.vertex_box(owner))) return;
+    if (owner >= 0 && too_close(p, owner)) return;
     // The corners on this line around p.
     const std::vector<Vec2>& line = vertical ? by_x_ : by_y_;
     const auto key_less = [vertical](Vec2 u, Vec2 w) {
@@ -203,12 +252,51 @@ class PointGenerator {
     const Vec2 c2 = *it, c1 = *(it - 1);
     if (along(c1) != at || along(c2) != at) return;  // rounding carried p off the side's range
     if (across(c1) == across(p)) return;            // p is a corner: the corner was warped
-    if (snapped(c1, s) || snapped(c2, s)) return;
-    points_.push_back({p, s, -1});
-    ++stats_.edge_points;
+    crossings_.push_back({p, s, c1, c2, owner, vertical, across(c2) - across(c1)});
+  }
+
+  // The Steiner points along each input segment, in order, keep a gap of at
+  // least a quarter of the smaller of their two scales: a point closer than
+  // that to the previous kept one (or to the segment's far end) is dropped.
+  // Dropping a Steiner point never breaks the mesh (the triangulation
+  // connects what is left); it only removes the rare pair that warps of
+  // corners of different box sizes bring close together.
+  void thin_segments() {
+    std::vector<std::vector<std::size_t>> on(d_.pslg.segments.size());
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (points_[i].segment >= 0) on[static_cast<std::size_t>(points_[i].segment)].push_back(i);
+    for (std::size_t s = 0; s < on.size(); ++s) {
+      if (on[s].empty()) continue;
+      const auto& seg = d_.pslg.segments[s];
+      const Vec2 a = vertex(seg[0]), e = vertex(seg[1]);
+      const auto param = [&](std::size_t i) {
+        const Vec2 p = points_[i].p;
+        return (p.x - a.x) * (e.x - a.x) + (p.y - a.y) * (e.y - a.y);
+      };
+      std::sort(on[s].begin(), on[s].end(), [&](std::size_t u, std::size_t w) {
+        const double pu = param(u), pw = param(w);
+        return pu != pw ? pu < pw : u < w;
+      });
+      Vec2 last = a;
+      double last_scale = std::numeric_limits<double>::infinity();
+      for (const std::size_t i : on[s]) {
+        const Tagged& t = points_[i];
+        const double gap = 0.25 * std::min(t.scale, last_scale);
+        const double to_end = std::hypot(e.x - t.p.x, e.y - t.p.y);
+        if (std::hypot(t.p.x - last.x, t.p.y - last.y) < gap || to_end < 0.25 * t.scale) {
+          points_[i].segment = kDropped;
+          continue;
+        }
+        last = t.p;
+        last_scale = t.scale;
+      }
+    }
+    points_.erase(std::remove_if(points_.begin(), points_.end(), [](const Tagged& t) { return t.segment == kDropped; }),
+                  points_.end());
   }
 
   MeshPoints assemble() {
+    thin_segments();
     for (std::size_t v = 0; v < d_.pslg.vertices.size(); ++v) points_.push_back({d_.pslg.vertices[v], -1, static_cast<int>(v)});
     std::vector<char> on_loop(d_.pslg.vertices.size(), 0);
     for (const auto& loop : d_.loops)
@@ -268,6 +356,8 @@ class PointGenerator {
   std::vector<Corner> corners_;
   std::vector<Vec2> by_x_, by_y_;  // distinct corners sorted by (x, y) and by (y, x)
   std::vector<Snap> snaps_;
+  std::vector<Snap> forced_;        // (corner, segment): a crossing forces the corner onto the segment
+  std::vector<Crossing> crossings_;
   std::vector<std::int32_t> around_;
   std::vector<Tagged> points_;
 };

@@ -87,6 +87,7 @@ void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_ch
     const Square sq = square(child);
     NodeData cd;
     cd.created_by = phase;
+    cd.vertex_owner = pd.vertex_owner;
     if (interior) {
       cd.has_component = true;
       tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
@@ -202,7 +203,7 @@ bool QuadtreeBuilder::vertex_crowded(std::int32_t node) const {
 bool QuadtreeBuilder::edge_crowded(std::int32_t node) const {
   if (tree_.is_protected(node)) return false;
   const NodeData& d = data(node);
-  if (!d.vertices.empty() || d.segments.empty()) return false;
+  if (!d.vertices.empty() || d.segments.empty() || d.vertex_owner >= 0) return false;
   const ExtendedFaces ex = extended_faces(node);
   const Square sq = square(node);
   const Rect own{sq.lo, {sq.lo.x + sq.side, sq.lo.y + sq.side}};
@@ -288,8 +289,13 @@ void QuadtreeBuilder::center_vertices() {
     ++stats_.centered;
     tree_.set_protected(b, true);
   }
-  // Protect the leaves inside each vertex box whose component is connected to
-  // the vertex's within ex(b) (the leaves the thesis unites into B).
+  // Mark the leaves inside each vertex box whose component is connected to the
+  // vertex's within ex(b) (the leaves the thesis unites into B). Only b, the
+  // leaf holding the vertex, is protected; the other three may be split by the
+  // balance condition (their descendants keep the mark), which grades the
+  // united box towards small outside neighbours instead of leaving one large
+  // box with a finely divided boundary (docs/ALGORITHM.md §8.2). The mesh still
+  // sees Lemma 1: no mesh vertex within h(b)/2 of the vertex (mesh_points.cpp).
   std::vector<std::int32_t> found;
   for (std::size_t v = 0; v < pv.size(); ++v) {
     const std::int32_t b = vertex_leaf[v];
@@ -303,7 +309,6 @@ void QuadtreeBuilder::center_vertices() {
         const bool inside_box = s.lo.x >= r.lo.x && s.lo.y >= r.lo.y && s.lo.x + s.side <= r.hi.x &&
                                 s.lo.y + s.side <= r.hi.y;
         if (inside_box && data(n).has_component && (n == b || balance_adjacent(b, n))) {
-          tree_.set_protected(n, true);
           mutable_data(n).vertex_owner = static_cast<int>(v);
         }
       }

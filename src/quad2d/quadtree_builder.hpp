@@ -41,7 +41,7 @@ struct NodeData {
   std::vector<int> vertices;           // P vertices of P ∧ b
   std::vector<int> segments;           // input segment ids of the P edges meeting P ∧ b
   bool has_component = false;          // false: the cube does not meet P
-  int vertex_owner = -1;               // v if this leaf is part of v's protected box (§4.1.3)
+  int vertex_owner = -1;               // v if this leaf lies in v's united box (§4.1.3)
   Phase created_by = Phase::Root;
 };
 
@@ -60,9 +60,12 @@ class QuadtreeBuilder {
   const Domain2& domain() const { return domain_; }
   const NodeData& data(std::int32_t node) const { return data_[static_cast<std::size_t>(tree_.payload(node))]; }
   Square square(std::int32_t node) const;
-  // The protected box of input vertex v (the 2x2 block of §4.1.3), as a closed
+  // The united box of input vertex v (the 2x2 block of §4.1.3), as a closed
   // rectangle; degenerate (lo > hi) for a vertex on no segment.
   const Rect& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }
+  // Lemma 1's clearance: no mesh vertex other than v within this distance of v
+  // (half the side of the leaf that held v when it was centred).
+  double vertex_clearance(int v) const { return 0.25 * (vertex_box(v).hi.x - vertex_box(v).lo.x); }
   // The segment id -> loop edge table.
   LoopEdge loop_edge(int segment) const { return segment_edge_[static_cast<std::size_t>(segment)]; }
 

@@ -89,5 +89,82 @@ if [[ ! -e $work/never.vtu ]]; then ok; else fail "failed convert left an output
 expect 2 "convert to an unknown extension" -- "$pqmesh" convert "$fixtures/cube_kuhn.mesh" "$work/never.xyz"
 if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "failed convert left a file: $(ls "$work")"; fi
 
+# mesh: the 2D quadtree mesher end to end. Every written mesh passes
+# 'pqmesh check'; a refused run (3D input, bad options, bad size field)
+# exits with its code and leaves no output file.
+expect 0 "mesh --help" -- "$pqmesh" mesh --help
+contains "$work/out" "usage: pqmesh mesh" "mesh --help text"
+for f in square comb; do
+  for ext in vtu msh node; do
+    expect 0 "mesh $f to .$ext" -- "$pqmesh" mesh "$data/2d/$f.poly" -o "$work/m_$f.$ext"
+    contains "$work/out" "^check +valid" "mesh $f summary reports a valid check"
+    expect 0 "check mesh of $f (.$ext)" -- "$pqmesh" check "$work/m_$f.$ext" --domain "$data/2d/$f.poly"
+    contains "$work/out" "^valid" "check of the $f mesh (.$ext) says valid"
+  done
+done
+# The summary's counts are those 'pqmesh check' finds in the written file.
+expect 0 "mesh square summary" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/sq.vtu"
+cp "$work/out" "$work/summary"
+contains "$work/summary" "^alpha +alpha = 90 deg" "square alpha in the mesh summary"
+contains "$work/summary" "^bound +min angle >= min\(" "bound line in the mesh summary"
+contains "$work/summary" "^angles +min [0-9.e+-]+ deg .*bound holds" "square mesh meets the bound"
+contains "$work/summary" "^size +I = integral of 1/lfs\^2" "size estimate in the mesh summary"
+expect 0 "check square mesh" -- "$pqmesh" check "$work/sq.vtu" --domain "$data/2d/square.poly"
+summary_counts=$(sed -nE 's/^mesh +([0-9]+) triangles, ([0-9]+) vertices.*/\1 \2/p' "$work/summary")
+check_counts=$(sed -nE 's/^valid: ([0-9]+) triangles, ([0-9]+) vertices.*/\1 \2/p' "$work/out")
+if [[ -n $summary_counts && $summary_counts == "$check_counts" ]]; then ok; else
+  fail "mesh summary counts '$summary_counts' differ from check's '$check_counts'"; fi
+# Every other 2D input of the corpus meshes to a valid mesh.
+for f in "$data"/2d/*.poly; do
+  b=$(basename "$f" .poly)
+  [[ $b == square || $b == comb ]] && continue
+  expect 0 "mesh $b" -- "$pqmesh" mesh "$f" -o "$work/c_$b.vtu" --quiet
+  expect 0 "check mesh of $b" -- "$pqmesh" check "$work/c_$b.vtu" --domain "$f"
+done
+# --quiet prints nothing on stdout, and still writes the mesh.
+expect 0 "mesh --quiet" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/quiet.msh" --quiet
+if [[ ! -s $work/out ]]; then ok; else fail "mesh --quiet printed: $(head -c 200 "$work/out")"; fi
+if [[ -s $work/quiet.msh ]]; then ok; else fail "mesh --quiet wrote no mesh"; fi
+# --format overrides the extension; sizing options give a valid (finer) mesh.
+expect 0 "mesh --format msh" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/fmt.out" --format msh
+[[ -e $work/fmt.out ]] && contains "$work/fmt.out" "^\\\$MeshFormat" "--format msh writes Gmsh"
+printf '# refine near the origin\n0 0 0.01\n\n1 1 0.25 # coarse corner\n' > "$work/field.txt"
+expect 0 "mesh with --max-size and --size-field" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/sized.vtu" \
+  --max-size 0.1 --size-field "$work/field.txt"
+expect 0 "check sized mesh" -- "$pqmesh" check "$work/sized.vtu" --domain "$data/2d/square.poly"
+# Deterministic: two runs give byte-identical files.
+for ext in vtu msh node; do
+  expect 0 "mesh comb again (.$ext)" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/again_comb.$ext" --quiet
+done
+for ext in vtu msh node ele poly; do
+  if [[ ! -e $work/m_comb.$ext || ! -e $work/again_comb.$ext ]]; then fail "no comb .$ext meshes to compare"
+  elif cmp -s "$work/m_comb.$ext" "$work/again_comb.$ext"; then ok; else fail "mesh .$ext output is not deterministic"; fi
+done
+# Refused runs: exit code, message, no output file.
+expect 2 "mesh 3D input" -- "$pqmesh" mesh "$data/3d/cube.poly" -o "$work/never_3d.vtu"
+contains "$work/err" "3D meshing is not available yet \(issue 5\)" "3D input message"
+for bad in 0 -1 abc inf nan 1e999; do
+  expect 64 "mesh --max-size $bad" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never_size.vtu" --max-size "$bad"
+  contains "$work/err" "max-size" "--max-size $bad message names the option"
+done
+expect 64 "mesh without -o" -- "$pqmesh" mesh "$data/2d/square.poly"
+expect 64 "mesh with an unknown --format" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never_fmt.vtu" --format xyz
+expect 2 "mesh to an unknown extension" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never_ext.xyz"
+expect 2 "mesh a bad 2D domain" -- "$pqmesh" mesh "$data/bad/2d_self_crossing.poly" -o "$work/never_bad.vtu"
+contains "$work/err" "error \[self-intersecting-facet\]" "bad 2D domain error kind"
+printf '0 0 0.1\n# two fields on line 3\n1 1\n' > "$work/field_fields.txt"
+printf '0 0 0.1\n\n0.5 0.5 0\n' > "$work/field_zero.txt"
+printf '0 0 0.1\n0 x 0.1\n' > "$work/field_text.txt"
+printf '0 0 0.1\n0 0 0.1\n0 0 inf\n# end\n' > "$work/field_inf.txt"
+for case in fields:3 zero:3 text:2 inf:3; do
+  name=${case%%:*} line=${case##*:}
+  expect 2 "mesh with bad size field ($name)" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never_field.vtu" \
+    --size-field "$work/field_$name.txt"
+  contains "$work/err" "field_$name.txt:$line: " "bad size field ($name) names line $line"
+done
+expect 2 "mesh with a missing size field" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never_field.vtu" \
+  --size-field "$work/no_such_field.txt"
+if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "refused mesh runs left files: $(ls "$work" | grep -E '^never')"; fi
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -14,6 +14,7 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quadmesh.hpp"
+#include "pqmesh/quadmesh_bound.hpp"
 #include "pqmesh/quality.hpp"
 #include "support/random_domains.hpp"
 
@@ -40,6 +41,7 @@ TEST(QuadMeshProperty, RandomPolygonsAreValidAndWellShaped) {
       worst_seed = seed;
     }
     worst_angle = std::min(worst_angle, achieved);
+    EXPECT_GE(achieved, quad_mesh_angle_bound(alpha)) << test::describe_polygon(seed) << " alpha " << alpha;
   }
   std::cout << kPolygons << " polygons, " << triangles << " triangles; worst min angle / min(alpha, 60) = "
             << worst_ratio << " (seed " << worst_seed << "), smallest angle " << worst_angle << "\n";

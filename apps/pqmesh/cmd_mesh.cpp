@@ -1,0 +1,196 @@
+// pqmesh mesh: mesh a 2D domain with the quadtree mesher (quad_mesh), check
+// the result against the domain, write it, and print a one-screen summary.
+// Nothing is written unless the mesh passed check_mesh; write_mesh itself is
+// atomic (pqmesh/mesh_io.hpp), so no failure leaves a partial output file.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "pqmesh/alpha.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/lfs.hpp"
+#include "pqmesh/mesh_io.hpp"
+#include "pqmesh/quadmesh.hpp"
+#include "pqmesh/quadmesh_bound.hpp"
+#include "pqmesh/quality.hpp"
+#include "pqmesh/read_domain.hpp"
+#include "args.hpp"
+#include "quality_fields.hpp"
+#include "report_format.hpp"
+
+namespace pqmesh::cli {
+namespace {
+
+// The angle guarantee printed with every mesh (include/pqmesh/quadmesh_bound.hpp).
+constexpr double kBoundC = kQuadMeshBoundC;
+constexpr double kBoundTheta0Degrees = kQuadMeshBoundTheta0Degrees;
+
+// Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`).
+// Twice the library default 1/8: a quarter of the cells for about 1% change
+// (data/2d/comb.poly: I = 1883 with 62171 cells at 1/4, 1892 with 243860 at
+// 1/8, 0.12 s instead of 0.44 s; square.poly: 2.410 against 2.442), so the
+// summary costs about what meshing does.
+constexpr double kLfsRefine = 0.25;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Four significant digits for angles, ratios and the size estimate.
+std::string fmt4(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g", v);
+  return buffer;
+}
+
+std::string fmt_seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", s);
+  return buffer;
+}
+
+// --format F: the names of to_string(MeshFormat) plus the usual extensions.
+std::optional<MeshFormat> format_option(const Args& args) {
+  const auto text = args.option("--format");
+  if (!text) return std::nullopt;
+  if (*text == "vtu") return MeshFormat::Vtu;
+  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
+  if (*text == "msh22") return MeshFormat::Msh22;
+  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
+  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
+  if (*text == "svg") return MeshFormat::Svg;
+  throw UsageError("--format must be vtu, msh, msh22, mesh, node or svg, got '" + *text + "'");
+}
+
+// --max-size S: a positive finite number (0 would mean "no limit" in
+// QuadMeshOptions, but on the command line that is said by leaving it out).
+double max_size_option(const Args& args) {
+  if (!args.option("--max-size")) return 0;
+  const double s = args.number("--max-size", 0);  // throws UsageError unless a finite number
+  if (!(s > 0)) throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
+  return s;
+}
+
+// Everything the summary reports, gathered by run_mesh.
+struct MeshRun {
+  std::string input, output;
+  MeshFormat format = MeshFormat::Vtu;
+  QuadMeshOptions options;
+  QuadMeshResult result;
+  CheckReport check;
+  LfsIntegral lfs;
+  double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0;
+};
+
+// One screen, labels padded to 11 columns as in `pqmesh info`.
+void print_summary(const Domain2& domain, const MeshRun& run) {
+  const TriMesh2& mesh = run.result.mesh;
+  const QuadMeshStats& s = run.result.stats;
+  std::size_t segments = 0;
+  for (const auto& loop : domain.loops) segments += loop.size();
+  std::cout << "input      " << run.input << " (2D polygon with holes)\n"
+            << "domain     " << domain.pslg.vertices.size() << " vertices, " << segments << " segments, "
+            << domain.loops.size() - 1 << " holes, area " << fmt(domain.area) << '\n';
+  const SizeField2& field = run.options.size_field;
+  if (run.options.max_size > 0 || !field.points.empty()) {
+    std::string sizing;
+    if (run.options.max_size > 0) sizing = "max size " + fmt(run.options.max_size);
+    if (!field.points.empty()) {
+      sizing += sizing.empty() ? "" : "; ";
+      sizing += "size field " + field.path + " (" + std::to_string(field.points.size()) +
+                (field.points.size() == 1 ? " point)" : " points)");
+    }
+    std::cout << "sizing     " << sizing << '\n';
+  }
+
+  const AlphaResult alpha = compute_alpha(domain.pslg.vertices, domain.loops);
+  const double bound = std::min(kBoundC * alpha.degrees(), kBoundTheta0Degrees);
+  const QualityReport q = quality_report(mesh);
+  std::cout << "alpha      " << alpha.describe(domain.pslg.source.first_id) << '\n'
+            << "bound      min angle >= min(" << fmt(kBoundC) << " * alpha, " << fmt(kBoundTheta0Degrees)
+            << " deg) = " << fmt4(bound) << " deg\n"
+            << "angles     min " << fmt4(q.min_angle.min) << " deg (triangle " << q.min_angle.argmin << "), max "
+            << fmt4(q.max_angle.max) << " deg (triangle " << q.max_angle.argmax << "); "
+            << (q.min_angle.min >= bound ? "bound holds" : "BELOW THE BOUND") << '\n'
+            << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
+  // I(P) with the Euclidean lfs (pqmesh/lfs.hpp): up to a constant, a lower
+  // bound on the triangles of any bounded-angle mesh of P, except across
+  // exterior slots, where the Euclidean lfs makes it an overestimate.
+  std::cout << "size       I = integral of 1/lfs^2 over P = " << fmt4(run.lfs.value) << " (Euclidean lfs, "
+            << run.lfs.cells << " cells); triangles / I = "
+            << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.triangles.size()) / run.lfs.value) : "-")
+            << (run.options.max_size > 0 || !field.points.empty() ? " (I ignores the sizing)" : "") << '\n'
+            << "tree       " << s.leaves << " leaves (" << s.duplicates << " duplicates, " << s.outside_leaves
+            << " outside P)\n"
+            << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", edge " << s.splits_edge
+            << ", balance " << s.splits_balance << ", centering " << s.splits_centering << ", protection "
+            << s.splits_protection << '\n'
+            << "boxes      " << s.vertex_boxes << " vertex boxes (" << s.centered << " centered), " << s.warped
+            << " warped corners, " << s.edge_points << " edge points\n"
+            << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
+            << ", triangulate " << fmt_seconds(s.seconds_triangulate) << "; mesh " << fmt_seconds(run.seconds_mesh)
+            << ", check " << fmt_seconds(run.seconds_check) << ", lfs " << fmt_seconds(run.seconds_lfs) << '\n'
+            << "check      valid: " << run.check.elements << " triangles, " << run.check.vertices << " vertices, "
+            << run.check.boundary_faces << " boundary edges; area " << fmt(run.check.mesh_volume) << " (domain "
+            << fmt(run.check.domain_volume) << ")\n"
+            << "output     " << run.output << " (" << to_string(run.format) << ")\n";
+}
+
+}  // namespace
+
+int run_mesh(const std::vector<std::string>& argv) {
+  const Args args(argv, {"--quiet", "--protect-edges"}, {"-o", "--output", "--max-size", "--size-field", "--format"});
+  args.expect_positional(1, 1);
+  MeshRun run;
+  run.input = args.positional()[0];
+  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
+  if (!out) throw UsageError("-o OUTPUT is required");
+  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
+  run.output = *out;
+  run.options.max_size = max_size_option(args);
+  run.options.protect_edges = args.flag("--protect-edges");
+  const std::optional<MeshFormat> forced = format_option(args);
+  // Unknown extension: ParseError(Unsupported), exit 2 before any work is done.
+  run.format = forced ? *forced : mesh_format_from_path(run.output);
+  const bool quiet = args.flag("--quiet");
+
+  if (domain_dimension(run.input) != 2) {
+    std::cerr << "pqmesh mesh: " << run.input << ": 3D meshing is not available yet (issue 5)\n";
+    return kExitInvalidInput;
+  }
+  const Domain2 domain = make_domain(read_pslg(run.input));
+  if (const auto field = args.option("--size-field")) run.options.size_field = read_size_field2(*field);
+
+  auto start = Clock::now();
+  run.result = quad_mesh(domain, run.options);
+  run.seconds_mesh = seconds_since(start);
+
+  start = Clock::now();
+  run.check = check_mesh(run.result.mesh, domain);
+  run.seconds_check = seconds_since(start);
+  if (!run.check.valid()) {
+    // quad_mesh promises a valid mesh: this is a bug, and nothing is written.
+    std::cerr << "pqmesh mesh: internal error: the mesh of " << run.input << " fails the validity check\n"
+              << run.check.to_text() << "please report this as a bug; nothing was written\n";
+    return kExitInternal;
+  }
+
+  if (!quiet) {  // the size estimate is for the summary only
+    start = Clock::now();
+    run.lfs = lfs_integral(domain, kLfsRefine);
+    run.seconds_lfs = seconds_since(start);
+  }
+
+  WriteOptions write;
+  write.format = run.format;
+  if (run.format == MeshFormat::Vtu) write.cell_fields = quality_fields(run.result.mesh);
+  write_mesh(run.result.mesh, run.output, write);
+  if (!quiet) print_summary(domain, run);
+  return kExitOk;
+}
+
+}  // namespace pqmesh::cli
