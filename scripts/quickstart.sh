@@ -4,4 +4,4 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
-"$root/build/bin/pqmesh" info "$root/data/3d/l_block.poly"
+"$root/build/bin/pqmesh" mesh "$root/data/2d/comb.poly" -o "$root/build/comb.vtu"

@@ -8,7 +8,8 @@
 //      rounds of decreasing stride over the input order (every 8^k-th point
 //      first; each round keeps the input order). Point location walks from
 //      the most recently created triangle, so spatially coherent orders
-//      (z-order) are fast. The convex
+//      (z-order) are fast; an incoherent input order (detected by the length
+//      of its tour, insertion_order.hpp) is replaced by a z-order. The convex
 //      hull is closed by a ghost vertex: every hull edge carries a ghost
 //      triangle, so points outside the current hull need no special case.
 //   2. Each constraint is inserted by edge flips (Sloan 1993) across the

@@ -21,6 +21,17 @@ TEST(CdtDelaunay, RandomPointsInInputAndZOrder) {
   }
 }
 
+// Large incoherent (random) input orders are re-ordered internally; the
+// result must still be a Delaunay triangulation of all points.
+TEST(CdtDelaunay, LargeRandomOrder) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    CdtInput in;
+    in.points = random_points(seed + 500, 6000);
+    for (int i = 0; i < 50; ++i) in.points.push_back({0.25 + i / 256.0, 0.75});  // a collinear run at the end
+    expect_cdt(in.points, {}, constrained_delaunay(in, false).triangles, "random order seed " + std::to_string(seed));
+  }
+}
+
 TEST(CdtDelaunay, SmallInputs) {
   CdtInput in;
   in.points = {{0, 0}, {1, 0}, {0, 1}};
