@@ -26,7 +26,8 @@
 // of the constrained Delaunay triangulations: every non-constraint interior
 // edge satisfies incircle <= 0 with its opposite vertex, and which one of the
 // equivalent triangulations of a cocircular set comes out depends only on the
-// input order (the output is deterministic).
+// input (points in their order, constraints in theirs): the output, triangles
+// in internal slot order, is deterministic.
 //
 // Constraints through points: a constraint that passes exactly through
 // another input point (exactly collinear, strictly between its ends) is split
@@ -59,7 +60,7 @@ struct CdtInput {
 };
 
 struct CdtOutput {
-  std::vector<std::array<int, 3>> triangles;    // counter-clockwise (orient2d > 0)
+  std::vector<std::array<int, 3>> triangles;  // counter-clockwise (orient2d > 0)
 };
 
 // keep_inside = true: only the triangles on the left of the constraint loops

@@ -189,8 +189,10 @@ void Triangulation::sloan_flips(int a, int b) {
       continue;
     }
     flip_tracked(h);
-    if (orient2d(A, B, C) * orient2d(A, B, D) == Sign::Negative) crossed_.push_back({c, d});
-    else fresh_.push_back({c, d});
+    if (orient2d(A, B, C) * orient2d(A, B, D) == Sign::Negative)
+      crossed_.push_back({c, d});
+    else
+      fresh_.push_back({c, d});
   }
 }
 

@@ -20,9 +20,7 @@ std::vector<std::uint8_t> Triangulation::inside_triangles() const {
   enum : std::uint8_t { kUnknown = 0, kInside = 1, kOutside = 2 };
   std::vector<std::uint8_t> label(tris_.size(), kUnknown);
   std::vector<int> stack;
-  auto piece_name = [](const std::array<int, 2>& pc) {
-    return std::to_string(pc[0]) + "->" + std::to_string(pc[1]);
-  };
+  auto piece_name = [](const std::array<int, 2>& pc) { return std::to_string(pc[0]) + "->" + std::to_string(pc[1]); };
   // A piece given in both directions has the inside on both sides (an
   // interior constraint edge): its right side is no outside seed.
   auto key = [](int a, int b) {
@@ -43,8 +41,8 @@ std::vector<std::uint8_t> Triangulation::inside_triangles() const {
     if (is_ghost(t))
       throw InternalError("constrained_delaunay: hull edge " + piece_name(pc) + " has the unbounded side on its left");
     if (label[t] == kOutside)
-      throw InternalError("constrained_delaunay: triangle " + std::to_string(t) + " lies on both sides of constraints (" +
-                          piece_name(pc) + ")");
+      throw InternalError("constrained_delaunay: triangle " + std::to_string(t) +
+                          " lies on both sides of constraints (" + piece_name(pc) + ")");
     if (label[t] == kInside) continue;
     label[t] = kInside;
     stack.push_back(t);

@@ -42,10 +42,10 @@ int Triangulation::random3() {
 
 // Real triangle (a, b, c), counter-clockwise, and its three ghost triangles.
 void Triangulation::make_first_triangle(int a, int b, int c) {
-  tris_.push_back({{a, b, c}, {-1, -1, -1}});            // 0
-  tris_.push_back({{b, a, kGhost}, {-1, -1, -1}});       // 1: hull edge a-b
-  tris_.push_back({{c, b, kGhost}, {-1, -1, -1}});       // 2: hull edge b-c
-  tris_.push_back({{a, c, kGhost}, {-1, -1, -1}});       // 3: hull edge c-a
+  tris_.push_back({{a, b, c}, {-1, -1, -1}});       // 0
+  tris_.push_back({{b, a, kGhost}, {-1, -1, -1}});  // 1: hull edge a-b
+  tris_.push_back({{c, b, kGhost}, {-1, -1, -1}});  // 2: hull edge b-c
+  tris_.push_back({{a, c, kGhost}, {-1, -1, -1}});  // 3: hull edge c-a
   link(he(0, 2), he(1, 2));
   link(he(0, 0), he(2, 2));
   link(he(0, 1), he(3, 2));
@@ -80,8 +80,10 @@ bool Triangulation::build_delaunay() {
     return false;
   }
   tris_.reserve(2 * static_cast<std::size_t>(n) + 2);
-  if (turn == Sign::Positive) make_first_triangle(p0, p1, id(third));
-  else make_first_triangle(p1, p0, id(third));
+  if (turn == Sign::Positive)
+    make_first_triangle(p0, p1, id(third));
+  else
+    make_first_triangle(p1, p0, id(third));
   // Insertion in rounds of decreasing stride (a deterministic analogue of a
   // biased randomized insertion order): round r inserts the positions that
   // are multiples of kStride^r but not of kStride^(r+1). Each round keeps the
@@ -148,8 +150,10 @@ Triangulation::Location Triangulation::locate(int p) {
 
 void Triangulation::insert_point(int p) {
   const Location loc = locate(p);
-  if (loc.edge < 0) split_triangle(loc.t, p);
-  else split_edge(he(loc.t, loc.edge), p);
+  if (loc.edge < 0)
+    split_triangle(loc.t, p);
+  else
+    split_edge(he(loc.t, loc.edge), p);
   legalize(p);
 }
 

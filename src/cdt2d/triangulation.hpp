@@ -73,8 +73,8 @@ class Triangulation {
 
  private:
   struct Location {
-    int t = -1;      // the triangle found
-    int edge = -1;   // >= 0: the point lies in the relative interior of this edge of t
+    int t = -1;     // the triangle found
+    int edge = -1;  // >= 0: the point lies in the relative interior of this edge of t
   };
 
   // triangulation.cpp
@@ -104,8 +104,8 @@ class Triangulation {
 
   const std::vector<Vec2>& pts_;
   std::vector<Tri> tris_;
-  std::vector<std::uint8_t> cons_;   // bit i of cons_[t]: edge i of t is constrained (phase 2 only)
-  std::vector<int> vtri_;            // phase 2: a triangle incident to each vertex
+  std::vector<std::uint8_t> cons_;           // bit i of cons_[t]: edge i of t is constrained (phase 2 only)
+  std::vector<int> vtri_;                    // phase 2: a triangle incident to each vertex
   std::vector<std::array<int, 2>> pieces_;   // constrained pieces, directed as given
   std::vector<int> stack_;                   // phase 1: triangles around the new point to check
   std::vector<std::array<int, 2>> crossed_;  // phase 2 scratch: edges crossed by a piece

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh/check2d_stages.hpp"
+#include "plc/point_location2.hpp"
 #include "pqmesh/errors.hpp"
 
 namespace pqmesh::detail::check2d {
@@ -175,8 +176,9 @@ void Checker2::check_located(const Domain2& d) {
   // Steiner point may lie an ulp outside; near_segment accepted it).
   std::vector<char> on_chain(m_.vertices.size(), 0);
   for (const int v : chain_items_) on_chain[static_cast<std::size_t>(v)] = 1;
+  const DomainLocator2 locator(d);
   for (std::size_t v = 0; v < m_.vertices.size(); ++v)
-    if (!on_chain[v] && locate(d, m_.vertices[v]) == Location::Outside)
+    if (!on_chain[v] && locator.locate(m_.vertices[v]) == Location::Outside)
       sink_.add(CheckKind::VertexOutside, {static_cast<std::int64_t>(v)},
                 "vertex " + std::to_string(v) + " at " + format_point(m_.vertices[v]) + " is outside the domain");
 }

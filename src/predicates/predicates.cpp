@@ -30,6 +30,52 @@ std::optional<Sign> filter(double det, double permanent, double factor) {
 
 Sign sign_of_mpq(const mpq_class& v) { return static_cast<Sign>(sgn(v)); }
 
+// Second stage, before GMP: evaluate the same expression with error-free
+// transformations (TwoSum; Dekker's product error with Veltkamp's split) and
+// keep a flag that stays true only while every operation is exact. When it
+// does, the double result IS the exact value and its sign is the answer. This
+// is the common case for the quadtree meshes' vertices (dyadic grid corners
+// with few significant bits), which are massively cocircular and collinear:
+// the filter cannot decide a determinant that is exactly zero, and GMP costs
+// microseconds per call. The transformations are exact only without overflow
+// and underflow, so the stage runs only when every operand's magnitude lies in
+// [2^-200, 2^200] (or is zero); then products of up to four factors stay
+// normal.
+class Certified {
+ public:
+  bool exact() const { return exact_; }
+  double sum(double a, double b) {
+    const double s = a + b, bv = s - a, av = s - bv;
+    if ((a - av) + (b - bv) != 0) exact_ = false;
+    return s;
+  }
+  double diff(double a, double b) { return sum(a, -b); }
+  double prod(double a, double b) {
+    check_range(a);
+    check_range(b);
+    const double p = a * b;
+    if (!exact_) return p;
+    double ah, al, bh, bl;
+    split(a, ah, al);
+    split(b, bh, bl);
+    if (((ah * bh - p) + ah * bl + al * bh) + al * bl != 0) exact_ = false;
+    return p;
+  }
+
+ private:
+  void check_range(double v) {
+    const double m = std::abs(v);
+    if (m != 0 && !(m >= 0x1p-200 && m <= 0x1p200)) exact_ = false;
+  }
+  static void split(double a, double& hi, double& lo) {
+    const double c = 134217729.0 * a;  // 2^27 + 1
+    const double big = c - a;
+    hi = c - big;
+    lo = a - hi;
+  }
+  bool exact_ = true;
+};
+
 mpq_class q(double v) { return mpq_class(v); }  // exact: every finite double is a dyadic rational
 
 Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
@@ -51,6 +97,10 @@ Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double det = l - r;
   const double permanent = std::abs(l) + std::abs(r);
   if (const auto s = filter(det, permanent, 8)) return *s;
+  Certified e;
+  const double ex = e.diff(a.x, c.x), fx = e.diff(b.x, c.x), ey = e.diff(a.y, c.y), fy = e.diff(b.y, c.y);
+  const double exact = e.diff(e.prod(ex, fy), e.prod(ey, fx));
+  if (e.exact()) return sign_of(exact);
   return orient2d_exact(a, b, c);
 }
 
@@ -90,6 +140,18 @@ Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
                            blift * (std::abs(cdx * ady) + std::abs(cdy * adx)) +
                            clift * (std::abs(adx * bdy) + std::abs(ady * bdx));
   if (const auto s = filter(det, permanent, 32)) return *s;
+  {
+    Certified e;
+    const double ax = e.diff(a.x, d.x), ay = e.diff(a.y, d.y), bx = e.diff(b.x, d.x), by = e.diff(b.y, d.y);
+    const double cx = e.diff(c.x, d.x), cy = e.diff(c.y, d.y);
+    const double al = e.sum(e.prod(ax, ax), e.prod(ay, ay)), bl = e.sum(e.prod(bx, bx), e.prod(by, by));
+    const double cl = e.sum(e.prod(cx, cx), e.prod(cy, cy));
+    const double t1 = e.prod(al, e.diff(e.prod(bx, cy), e.prod(by, cx)));
+    const double t2 = e.prod(bl, e.diff(e.prod(cx, ay), e.prod(cy, ax)));
+    const double t3 = e.prod(cl, e.diff(e.prod(ax, by), e.prod(ay, bx)));
+    const double exact = e.sum(e.sum(t1, t2), t3);
+    if (e.exact()) return sign_of(exact);
+  }
   const mpq_class ax = q(a.x) - q(d.x), ay = q(a.y) - q(d.y), bx = q(b.x) - q(d.x), by = q(b.y) - q(d.y);
   const mpq_class cx = q(c.x) - q(d.x), cy = q(c.y) - q(d.y);
   const mpq_class al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;

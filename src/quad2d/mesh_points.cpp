@@ -100,7 +100,7 @@ class PointGenerator {
   }
 
   void collect_corners() {
-    for (const std::int32_t n : b_.tree().leaves()) {
+    for (const std::int32_t n : b_.leaves_by_id()) {
       if (!b_.data(n).has_component) continue;
       leaves_.push_back(n);
       const Square s = b_.square(n);
@@ -129,12 +129,25 @@ class PointGenerator {
 
   void place_corner(std::size_t first, std::size_t last, std::vector<int>& segs) {
     const Vec2 c{corners_[first].x, corners_[first].y};
+    // Fast path: c is a corner of four leaves (so of no larger leaf's side),
+    // none meets an input edge or lies in a vertex box: c is inside P, far
+    // from the boundary, and stays as it is.
+    if (last - first == 4) {
+      bool plain = true;
+      for (std::size_t k = first; k < last && plain; ++k) {
+        const NodeData& nd = b_.data(corners_[k].leaf);
+        plain = nd.square_edges.empty() && nd.vertex_owner < 0;
+      }
+      if (plain) {
+        points_.push_back({c, -1, -1});
+        return;
+      }
+    }
     double h = std::numeric_limits<double>::infinity(), h_max = 0;
     segs.clear();
     std::int32_t edge_leaf = -1;
     // Every leaf whose closed square holds c, also those of which c is a
     // hanging corner (a point of a side, not a corner): their size matters.
-    (void)last;
     b_.tree().leaves_containing({c.x, c.y}, around_);
     for (const std::int32_t n : around_) {
       const NodeData& nd = b_.data(n);

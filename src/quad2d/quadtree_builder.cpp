@@ -42,6 +42,14 @@ QuadtreeBuilder::QuadtreeBuilder(const Domain2& domain, const SizeFunction2& siz
       segment_edge_[static_cast<std::size_t>(domain.loop_segments[l][k])] = {static_cast<int>(l), static_cast<int>(k)};
 }
 
+std::vector<std::int32_t> QuadtreeBuilder::leaves_by_id() const {
+  std::vector<std::int32_t> out;
+  out.reserve(static_cast<std::size_t>(tree_.leaf_count()));
+  for (std::int32_t n = 0; n < tree_.size(); ++n)
+    if (tree_.is_leaf(n)) out.push_back(n);
+  return out;
+}
+
 Square QuadtreeBuilder::square(std::int32_t node) const {
   const auto b = tree_.box(node);
   return {{b.lo[0], b.lo[1]}, b.hi[0] - b.lo[0]};
@@ -222,7 +230,7 @@ bool QuadtreeBuilder::edge_crowded(std::int32_t node) const {
 }
 
 void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(std::int32_t) const) {
-  std::vector<std::int32_t> work = tree_.leaves();
+  std::vector<std::int32_t> work = leaves_by_id();
   std::int64_t& counter = phase == Phase::Size     ? stats_.splits_size
                           : phase == Phase::Vertex ? stats_.splits_vertex
                                                    : stats_.splits_edge;
@@ -255,7 +263,7 @@ void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(st
 void QuadtreeBuilder::center_vertices() {
   const auto& pv = domain_.pslg.vertices;
   std::vector<std::int32_t> vertex_leaf(pv.size(), -1);
-  for (const std::int32_t n : tree_.leaves())
+  for (const std::int32_t n : leaves_by_id())
     for (const int v : data(n).vertices) vertex_leaf[static_cast<std::size_t>(v)] = n;
   std::vector<std::int32_t> big;
   for (std::size_t v = 0; v < pv.size(); ++v) {
@@ -321,7 +329,7 @@ void QuadtreeBuilder::center_vertices() {
 // protected (exempt from later splitting).
 void QuadtreeBuilder::protect_edges() {
   std::vector<std::int32_t> targets;
-  for (const std::int32_t n : tree_.leaves())
+  for (const std::int32_t n : leaves_by_id())
     if (data(n).has_component && !data(n).segments.empty() && !tree_.is_protected(n)) targets.push_back(n);
   for (const std::int32_t n : targets) {
     if (!tree_.is_leaf(n)) continue;
@@ -333,7 +341,7 @@ void QuadtreeBuilder::protect_edges() {
       if (tree_.is_leaf(id)) fresh.push_back(id);
     balance(fresh);
   }
-  for (const std::int32_t n : tree_.leaves())
+  for (const std::int32_t n : leaves_by_id())
     if (data(n).has_component && !data(n).segments.empty()) tree_.set_protected(n, true);
 }
 
@@ -344,7 +352,7 @@ void QuadtreeBuilder::build() {
   center_vertices();
   run_phase(Phase::Edge, &QuadtreeBuilder::edge_crowded);
   if (protect_edges_) protect_edges();
-  for (const std::int32_t n : tree_.leaves()) {
+  for (const std::int32_t n : leaves_by_id()) {
     ++stats_.leaves;
     if (!data(n).has_component) ++stats_.outside_leaves;
   }

@@ -60,6 +60,9 @@ class QuadtreeBuilder {
   const Domain2& domain() const { return domain_; }
   const NodeData& data(std::int32_t node) const { return data_[static_cast<std::size_t>(tree_.payload(node))]; }
   Square square(std::int32_t node) const;
+  // The leaves in id (creation) order: deterministic, and much cheaper than
+  // Tree::leaves()'s z-order sort when the order does not matter.
+  std::vector<std::int32_t> leaves_by_id() const;
   // The united box of input vertex v (the 2x2 block of §4.1.3), as a closed
   // rectangle; degenerate (lo > hi) for a vertex on no segment.
   const Rect& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }

@@ -3,6 +3,8 @@
 // chain, edge bookkeeping by sorting, brute-force constraint chains, and a
 // seeded point generator. Every decision is an exact predicate; nothing here
 // uses the module under test.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -10,8 +12,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "pqmesh/check.hpp"
@@ -175,8 +175,8 @@ inline void expect_cdt(const std::vector<Vec2>& pts, const std::vector<std::arra
   EXPECT_EQ(bad_orientation, 0);
   std::sort(halves.begin(), halves.end(), [](const Half& a, const Half& b) { return a.key < b.key; });
   auto find = [&](std::uint64_t key) -> const Half* {
-    auto it = std::lower_bound(halves.begin(), halves.end(), key,
-                               [](const Half& a, std::uint64_t k) { return a.key < k; });
+    auto it =
+        std::lower_bound(halves.begin(), halves.end(), key, [](const Half& a, std::uint64_t k) { return a.key < k; });
     return it != halves.end() && it->key == key ? &*it : nullptr;
   };
   int repeated = 0, boundary = 0, not_delaunay = 0;

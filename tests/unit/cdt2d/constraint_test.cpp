@@ -50,13 +50,15 @@ TEST(CdtConstraints, StarPolygonSidesAmongRandomPoints) {
     const std::vector<int> ids = add_star_polygon(in.points, rng, 5 + static_cast<int>(seed % 40));
     if (ids.empty()) continue;
     for (std::size_t k = 0; k < ids.size(); ++k) in.constraints.push_back({ids[k], ids[(k + 1) % ids.size()]});
-    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles, "star seed " + std::to_string(seed));
+    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
+               "star seed " + std::to_string(seed));
 
     // keep_inside: exactly the polygon, area by the shoelace formula.
     const Tris inside = constrained_delaunay(in, true).triangles;
     double shoelace = 0;
     for (std::size_t k = 0; k < ids.size(); ++k)
-      shoelace += 0.5 * cross(in.points[ids[k]] - Vec2{0.5, 0.5}, in.points[ids[(k + 1) % ids.size()]] - Vec2{0.5, 0.5});
+      shoelace +=
+          0.5 * cross(in.points[ids[k]] - Vec2{0.5, 0.5}, in.points[ids[(k + 1) % ids.size()]] - Vec2{0.5, 0.5});
     EXPECT_NEAR(area_of(in.points, inside), shoelace, 1e-12);
     int outside_vertex = 0;
     for (const auto& t : inside)
@@ -100,7 +102,8 @@ TEST(CdtConstraints, GreedyRandomSegmentsOnGrid) {
       if (ok) in.constraints.push_back({a, b});
     }
     ASSERT_GE(in.constraints.size(), 5u);
-    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles, "grid segments seed " + std::to_string(seed));
+    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
+               "grid segments seed " + std::to_string(seed));
   }
 }
 
@@ -120,7 +123,8 @@ TEST(CdtConstraints, GreedyRandomSegmentsAmongRandomPoints) {
         if (cross_properly(in.points[a], in.points[b], in.points[c[0]], in.points[c[1]])) ok = false;
       if (ok) in.constraints.push_back({a, b});
     }
-    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles, "random segments seed " + std::to_string(seed));
+    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
+               "random segments seed " + std::to_string(seed));
   }
 }
 
@@ -161,7 +165,8 @@ TEST(CdtConstraints, NearlyStraightConstrainedChains) {
       }
     }
     for (int i = 0; i < 200; ++i) in.points.push_back({unit(rng), unit(rng)});
-    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles, "chains seed " + std::to_string(seed));
+    expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
+               "chains seed " + std::to_string(seed));
   }
 }
 

@@ -96,8 +96,8 @@ TEST(CdtDelaunay, CollinearRuns) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     std::mt19937_64 rng(seed);
     CdtInput in;
-    for (int i = 0; i < 40; ++i) in.points.push_back({i / 8.0, 0.0});        // bottom hull side
-    for (int i = 1; i < 30; ++i) in.points.push_back({i / 8.0, i / 16.0});    // diagonal
+    for (int i = 0; i < 40; ++i) in.points.push_back({i / 8.0, 0.0});           // bottom hull side
+    for (int i = 1; i < 30; ++i) in.points.push_back({i / 8.0, i / 16.0});      // diagonal
     for (int i = 0; i < 30; ++i) in.points.push_back({0.125 + i / 16.0, 1.0});  // top side
     for (int i = 0; i < 60; ++i) in.points.push_back({unit(rng) * 4.875, unit(rng)});
     expect_cdt(in.points, {}, constrained_delaunay(in, false).triangles, "collinear runs");

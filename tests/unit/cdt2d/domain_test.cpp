@@ -2,10 +2,11 @@
 // the loop sides of the validated Domain2 are the constraints, interior on
 // the left; the kept triangles must form a valid mesh of the domain
 // (check_mesh), with the domain's area.
+#include "pqmesh/domain.hpp"
+
 #include <cmath>
 
 #include "cdt_test_util.hpp"
-#include "pqmesh/domain.hpp"
 #include "support/random_domains.hpp"
 
 namespace pqmesh::cdt2d::test {
