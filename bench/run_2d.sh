@@ -235,6 +235,12 @@ run_pqmesh() {
   done
   local ang note; ang=$(awk '/^min angle \(deg\)/ { print $4; exit }' "$dir/quality.txt")
   note=${max_size:+max-size $(printf '%.3g' "$max_size")}
+  # Size against the lower-bound estimate I = integral of 1/lfs^2 (untimed
+  # second run with the summary; only meaningful without a size cap).
+  if [[ -z $max_size ]]; then
+    local ratio; ratio=$("$pqmesh" mesh "$poly" -o "$dir/summary.vtu" 2>/dev/null | sed -n 's/.*triangles \/ I = \([0-9.e+-]*\).*/\1/p')
+    note="triangles/I ${ratio:-n/a}"; rm -f "$dir/summary.vtu"
+  fi
   grep -q INVALID "$dir/quality.txt" && note="$note topology INVALID"
   row pqmesh "$name" "${pq_count:-n/a}" "$wall" "$kib" "n/a" "${ang:-n/a}" "$note"
   rm -f "$dir/out.vtu"

@@ -66,6 +66,30 @@ class Triangulation {
   // from the left of every constraint piece), else 0.
   std::vector<std::uint8_t> inside_triangles() const;
 
+  // Phase 4 (refine_ops.cpp): support for Delaunay refinement (refine.hpp).
+  // The point array given to the constructor may grow between calls (the
+  // triangulation keeps a reference to the vector, not to its storage).
+  // begin_refinement takes the inside labels of inside_triangles(); from then
+  // on every operation keeps them, the constraint bits and vtri_ up to date.
+  void begin_refinement(std::vector<std::uint8_t> inside);
+  bool inside(int t) const { return inside_[static_cast<std::size_t>(t)] != 0; }
+  int vertex_triangle(int v) const { return vtri_[static_cast<std::size_t>(v)]; }
+  int index_of(int t, int v) const { return index_in(t, v); }
+  int half_edge(int u, int v) const { return find_half_edge(u, v); }
+  const std::vector<std::array<int, 2>>& pieces() const { return pieces_; }
+  // Point p strictly inside the inside triangle t (edge < 0), or in the
+  // relative interior of the non-constrained edge `edge` of t (both sides
+  // inside, as a walk that never crosses a constraint finds it): 1-3 or 2-4
+  // split, then Lawson flips that never cross a constrained edge.
+  void insert_interior_point(int p, int t, int edge);
+  // Split the constrained edge of half-edge h (its triangle inside) at the new
+  // point p, which the caller constructed near the edge (a rounded point, not
+  // necessarily exactly on it). The two halves stay constrained. Nothing
+  // changes and false is returned when one of the new real triangles would
+  // not be strictly counter-clockwise (exact orient2d): then the four new
+  // triangles tile the old quadrilateral exactly (see refine_ops.cpp).
+  bool split_constrained_edge(int h, int p);
+
   int triangle_count() const { return static_cast<int>(tris_.size()); }
   const Tri& tri(int t) const { return tris_[t]; }
   bool is_ghost(int t) const { return tris_[t].v[0] < 0 || tris_[t].v[1] < 0 || tris_[t].v[2] < 0; }
@@ -102,8 +126,13 @@ class Triangulation {
   void sloan_flips(int a, int b);
   void restore_delaunay();
 
+  // refine_ops.cpp
+  void legalize_constrained(int p);
+  void set_vertex_triangle(int p, int t);
+
   const std::vector<Vec2>& pts_;
   std::vector<Tri> tris_;
+  std::vector<std::uint8_t> inside_;         // phase 4: 1 for triangles inside the domain
   std::vector<std::uint8_t> cons_;           // bit i of cons_[t]: edge i of t is constrained (phase 2 only)
   std::vector<int> vtri_;                    // phase 2: a triangle incident to each vertex
   std::vector<std::array<int, 2>> pieces_;   // constrained pieces, directed as given

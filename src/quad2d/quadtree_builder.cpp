@@ -70,9 +70,19 @@ SquareComponents QuadtreeBuilder::components_of(std::int32_t node) const {
   return components(domain_, square(node), d.square_edges);
 }
 
+NodeData& QuadtreeBuilder::own_data(std::int32_t node) {
+  if (tree_.payload(node) == kInterior) {
+    tree_.set_payload(node, static_cast<std::int32_t>(data_.size()));
+    data_.push_back(data_[kInterior]);
+  }
+  return data_[static_cast<std::size_t>(tree_.payload(node))];
+}
+
 void QuadtreeBuilder::init_root() {
   tree_.set_payload(0, 0);
   data_.emplace_back();
+  data_.emplace_back();  // kInterior: a square inside P with no faces and no vertex box
+  data_[kInterior].has_component = true;
   data_[0].square_edges = all_loop_edges(domain_);
   data_[0].ex_edges = data_[0].square_edges;
   const SquareComponents sc = components(domain_, square(0), data_[0].square_edges);
@@ -84,7 +94,7 @@ void QuadtreeBuilder::init_root() {
   data_[0].segments = sc.components[0].edges;
 }
 
-void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_child, Phase phase) {
+void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_child) {
   const NodeData pd = data(parent);  // copy: data_ grows below
   const int parent_component = tree_.component(parent);
   const bool interior = pd.square_edges.empty();  // the parent square lies in P
@@ -94,10 +104,13 @@ void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_ch
     const std::int32_t child = first_child + k;
     const Square sq = square(child);
     NodeData cd;
-    cd.created_by = phase;
     cd.vertex_owner = pd.vertex_owner;
     if (interior) {
       cd.has_component = true;
+      if (cd.vertex_owner < 0) {
+        tree_.set_payload(child, kInterior);
+        continue;
+      }
       tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
       data_.push_back(std::move(cd));
       continue;
@@ -129,9 +142,9 @@ void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_ch
   }
 }
 
-std::int32_t QuadtreeBuilder::split(std::int32_t node, Phase phase) {
+std::int32_t QuadtreeBuilder::split(std::int32_t node) {
   const std::int32_t first = tree_.split(node);
-  assign_children(node, first, phase);
+  assign_children(node, first);
   return first;
 }
 
@@ -169,7 +182,7 @@ ExtendedFaces QuadtreeBuilder::extended_faces(std::int32_t node) const {
 void QuadtreeBuilder::balance(std::span<const std::int32_t> seeds) {
   stats_.splits_balance += tree_.balance(
       seeds, [this](std::int32_t big, std::int32_t small) { return balance_adjacent(big, small); },
-      [this](std::int32_t n, std::int32_t first) { assign_children(n, first, Phase::Balance); });
+      [this](std::int32_t n, std::int32_t first) { assign_children(n, first); });
 }
 
 bool QuadtreeBuilder::size_crowded(std::int32_t node) const {
@@ -241,7 +254,7 @@ void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(st
       throw InternalError("quad2d: refinement reached the deepest representable level (phase " +
                           std::to_string(static_cast<int>(phase)) + ")");
     const std::int32_t before = tree_.size();
-    split(n, phase);
+    split(n);
     ++counter;
     std::vector<std::int32_t> fresh;
     for (std::int32_t id = before; id < tree_.size(); ++id)
@@ -276,7 +289,7 @@ void QuadtreeBuilder::center_vertices() {
       for (const std::int32_t n : big) {
         if (!tree_.is_leaf(n) || tree_.is_protected(n) || !balance_adjacent(n, b)) continue;
         const std::int32_t before = tree_.size();
-        split(n, Phase::Centering);
+        split(n);
         ++stats_.splits_centering;
         std::vector<std::int32_t> fresh;
         for (std::int32_t id = before; id < tree_.size(); ++id)
@@ -317,7 +330,7 @@ void QuadtreeBuilder::center_vertices() {
         const bool inside_box = s.lo.x >= r.lo.x && s.lo.y >= r.lo.y && s.lo.x + s.side <= r.hi.x &&
                                 s.lo.y + s.side <= r.hi.y;
         if (inside_box && data(n).has_component && (n == b || balance_adjacent(b, n))) {
-          mutable_data(n).vertex_owner = static_cast<int>(v);
+          own_data(n).vertex_owner = static_cast<int>(v);
         }
       }
     }
@@ -334,7 +347,7 @@ void QuadtreeBuilder::protect_edges() {
   for (const std::int32_t n : targets) {
     if (!tree_.is_leaf(n)) continue;
     const std::int32_t before = tree_.size();
-    split(n, Phase::Protection);
+    split(n);
     ++stats_.splits_protection;
     std::vector<std::int32_t> fresh;
     for (std::int32_t id = before; id < tree_.size(); ++id)

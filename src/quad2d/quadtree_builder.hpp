@@ -33,7 +33,8 @@
 
 namespace pqmesh::quad2d {
 
-enum class Phase : std::uint8_t { Root, Size, Vertex, Balance, Centering, Edge, Protection };
+// The crowding phases run by run_phase (the others have their own functions).
+enum class Phase : std::uint8_t { Size, Vertex, Edge };
 
 struct NodeData {
   std::vector<LoopEdge> square_edges;  // P edges meeting the closed square (all components; Euclidean)
@@ -42,7 +43,6 @@ struct NodeData {
   std::vector<int> segments;           // input segment ids of the P edges meeting P ∧ b
   bool has_component = false;          // false: the cube does not meet P
   int vertex_owner = -1;               // v if this leaf lies in v's united box (§4.1.3)
-  Phase created_by = Phase::Root;
 };
 
 // The faces of P ∧ ex(b) (thesis §4.1.1 "Extended Box").
@@ -76,14 +76,18 @@ class QuadtreeBuilder {
   SquareComponents components_of(std::int32_t node) const;
 
  private:
-  NodeData& mutable_data(std::int32_t node) { return data_[static_cast<std::size_t>(tree_.payload(node))]; }
+  // Nodes whose square lies inside P, away from vertex boxes, all share the
+  // record kInterior (they have no faces to list): the tree's bulk costs no
+  // per-node lists. own_data() gives a node its own record before a change.
+  static constexpr std::int32_t kInterior = 1;
+  NodeData& own_data(std::int32_t node);
   void init_root();
   // Thesis §4.1.1: "Whenever a box is split, we immediately determine whether any
   // of its children contains more than one component of P, and if so, we make
   // duplicates of the child box." Children get the components of P ∩ child that
   // lie in P ∧ parent.
-  void assign_children(std::int32_t parent, std::int32_t first_child, Phase phase);
-  std::int32_t split(std::int32_t node, Phase phase);
+  void assign_children(std::int32_t parent, std::int32_t first_child);
+  std::int32_t split(std::int32_t node);
   void balance(std::span<const std::int32_t> seeds);
   bool balance_adjacent(std::int32_t big, std::int32_t small) const;
   ExtendedFaces extended_faces(std::int32_t node) const;

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Doubling series for the 2D quadtree mesher (issue 3: time and memory linear
+# in the output). Meshes the benchmark plate (bench/peers2d/poly2d.py plate:
+# unit square with 5 circular holes) with --max-size halved at each step, so
+# the triangle count roughly quadruples; prints triangles, wall seconds, peak
+# MiB, triangles per second, bytes per triangle, and the growth of time and
+# memory against the growth of the count (both near 1 when linear). Whole
+# process: read, mesh, check, write binary .vtu, one thread. Not a test.
+#   bench/series_2d.sh [STEPS]     (default 5 steps from max-size 1/64)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+pqmesh=${PQMESH_BIN:-$root/build/bin/pqmesh}
+[[ -x $pqmesh ]] || { echo "series_2d: no pqmesh at $pqmesh (build first or set PQMESH_BIN)"; exit 1; }
+steps=${1:-5}
+work=$(mktemp -d "${TMPDIR:-/tmp}/pqmesh_series2d.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+python3 "$root/bench/peers2d/poly2d.py" plate "$work/plate.poly"
+printf '%-12s %10s %8s %9s %10s %7s %12s %12s\n' max-size triangles wall_s peak_MiB tri/s B/tri time_growth mem_growth
+size=0.015625 prev_n="" prev_t="" prev_m=""
+for ((i = 0; i < steps; i++)); do
+  /usr/bin/time -f '%e %M' -o "$work/time.txt" "$pqmesh" mesh "$work/plate.poly" -o "$work/out.vtu" --max-size "$size" --quiet
+  read -r wall kib <"$work/time.txt"
+  n=$("$pqmesh" quality "$work/out.vtu" | awk '/^quality of/ { print $3; exit }')
+  python3 - "$size" "$n" "$wall" "$kib" "${prev_n:-0}" "${prev_t:-0}" "${prev_m:-0}" <<'PY'
+import sys
+size, n, wall, kib, pn, pt, pm = sys.argv[1:]
+n, wall, kib, pn, pt, pm = int(n), float(wall), int(kib), int(pn), float(pt), int(pm)
+rate = n / wall if wall > 0 else float('nan')
+growth = lambda now, before: '%.2f' % ((now / before) / (n / pn)) if pn and before else '-'
+print('%-12s %10d %8.2f %9.1f %10.3g %7.0f %12s %12s' % (size, n, wall, kib / 1024, rate, kib * 1024 / n, growth(wall, pt), growth(kib, pm)))
+PY
+  prev_n=$n prev_t=$wall prev_m=$kib
+  size=$(python3 -c "print($size / 2)")
+done
