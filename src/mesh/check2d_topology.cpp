@@ -197,48 +197,31 @@ void Checker2::find_hanging_vertices() {
 // is listed. Direction is not prescribed.
 void Checker2::check_listed_edges() {
   if (m_.edges.empty()) return;
-  struct K {
-    int lo, hi;
-    int source;  // listed index >= 0; -1 mesh edge on one triangle; -2 on two
-  };
-  std::vector<K> keys;
-  for (const auto& e : boundary_) keys.push_back({std::min(e[0], e[1]), std::max(e[0], e[1]), -1});
-  {
-    std::vector<std::array<int, 2>> b = boundary_;
-    for (auto& e : b)
-      if (e[0] > e[1]) std::swap(e[0], e[1]);
-    std::sort(b.begin(), b.end());
-    for (const auto& e : all_edges_)
-      if (!std::binary_search(b.begin(), b.end(), e)) keys.push_back({e[0], e[1], -2});
-  }
+  // Listed edges as (lo, hi, index), sorted; all_edges_ is sorted and unique,
+  // so both directions are binary searches (no sort of every mesh edge).
+  std::vector<std::array<int, 3>> listed;
+  listed.reserve(m_.edges.size());
   for (std::size_t i = 0; i < m_.edges.size(); ++i) {
     const auto& e = m_.edges[i];
-    keys.push_back({std::min(e[0], e[1]), std::max(e[0], e[1]), static_cast<int>(i)});
+    listed.push_back({std::min(e[0], e[1]), std::max(e[0], e[1]), static_cast<int>(i)});
   }
-  std::sort(keys.begin(), keys.end(), [](const K& a, const K& b) {
-    if (a.lo != b.lo) return a.lo < b.lo;
-    if (a.hi != b.hi) return a.hi < b.hi;
-    return a.source < b.source;  // mesh edge records first
-  });
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i;
-    while (j < keys.size() && keys[j].lo == keys[i].lo && keys[j].hi == keys[i].hi) ++j;
-    const bool mesh_edge = keys[i].source < 0;
-    const std::size_t first_listed = mesh_edge ? i + 1 : i;
-    if (mesh_edge && keys[i].source == -1 && first_listed == j)
-      sink_.add(CheckKind::BoundaryFace, {keys[i].lo, keys[i].hi},
-                "boundary edge (" + std::to_string(keys[i].lo) + " " + std::to_string(keys[i].hi) +
+  std::sort(listed.begin(), listed.end());
+  for (std::size_t k = 0; k < listed.size(); ++k) {
+    const int l = listed[k][2];
+    const std::string head = "listed edge " + std::to_string(l) + " (" + format_ids(m_.edges[l]) + ") ";
+    const std::array<int, 2> key{listed[k][0], listed[k][1]};
+    if (!std::binary_search(all_edges_.begin(), all_edges_.end(), key))
+      sink_.add(CheckKind::BoundaryFace, {l}, head + "is not an edge of the mesh");
+    else if (k > 0 && listed[k - 1][0] == key[0] && listed[k - 1][1] == key[1])
+      sink_.add(CheckKind::BoundaryFace, {l}, head + "is listed more than once");
+  }
+  for (const auto& e : boundary_) {
+    const std::array<int, 3> lo{std::min(e[0], e[1]), std::max(e[0], e[1]), -1};
+    const auto it = std::lower_bound(listed.begin(), listed.end(), lo);
+    if (it == listed.end() || (*it)[0] != lo[0] || (*it)[1] != lo[1])
+      sink_.add(CheckKind::BoundaryFace, {lo[0], lo[1]},
+                "boundary edge (" + std::to_string(lo[0]) + " " + std::to_string(lo[1]) +
                     ") is missing from TriMesh2::edges");
-    for (std::size_t k = first_listed; k < j; ++k) {
-      const int l = keys[k].source;
-      const std::string head =
-          "listed edge " + std::to_string(l) + " (" + format_ids(m_.edges[l]) + ") ";
-      if (!mesh_edge)
-        sink_.add(CheckKind::BoundaryFace, {l}, head + "is not an edge of the mesh");
-      else if (k > first_listed)
-        sink_.add(CheckKind::BoundaryFace, {l}, head + "is listed more than once");
-    }
-    i = j;
   }
 }
 
