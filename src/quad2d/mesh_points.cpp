@@ -44,13 +44,21 @@ struct Snap {
 // Moves a constructed point by single ulps towards the line ab until it is a
 // faithful rounding of a point of the segment (within_ulp_of_segment). Only y
 // moves when keep_x (the point is on a vertical box side x = const, exact),
-// only x when keep_y, else the coordinate along which the line's normal is
-// larger. Constructions are a few ulps off, so this ends within a few steps.
+// only x when keep_y, else the coordinate whose ulp moves the point furthest
+// across the line (|normal component| * ulp). A construction is off by a few
+// ulps of the segment's coordinates, which near the origin can be many ulps
+// of the point's own: the step budget allows for that.
 Vec2 settle_on_segment(Vec2 p, Vec2 a, Vec2 b, bool keep_x, bool keep_y) {
   const double inf = std::numeric_limits<double>::infinity();
+  // The exact point lies in the segment's bounding box; a construction may
+  // round out of it near an endpoint, where moving towards the line alone
+  // would never succeed.
+  p.x = std::clamp(p.x, std::min(a.x, b.x), std::max(a.x, b.x));
+  p.y = std::clamp(p.y, std::min(a.y, b.y), std::max(a.y, b.y));
   const double nx = a.y - b.y, ny = b.x - a.x;  // left normal of ab
-  const bool move_x = keep_y || (!keep_x && std::fabs(nx) >= std::fabs(ny));
-  for (int step = 0; step < 4096; ++step) {
+  const auto ulp = [inf](double v) { return std::nextafter(std::fabs(v), inf) - std::fabs(v); };
+  const bool move_x = keep_y || (!keep_x && std::fabs(nx) * ulp(p.x) >= std::fabs(ny) * ulp(p.y));
+  for (int step = 0; step < (1 << 20); ++step) {
     if (within_ulp_of_segment(p, a, b)) return p;
     const Sign s = orient2d(a, b, p);  // Positive: p is on the left (normal side)
     const double dir = (s == Sign::Positive) ? -1.0 : 1.0;

@@ -47,5 +47,39 @@ TEST(QuadMeshProperty, RandomPolygonsAreValidAndWellShaped) {
             << worst_ratio << " (seed " << worst_seed << "), smallest angle " << worst_angle << "\n";
 }
 
+// Harder generator settings: many holes with gaps down to 1e-5 of the part,
+// spikes down to 0.5 degrees, vertices snapped to a coarse dyadic grid (so
+// edges pass through box corners and along box sides). Validity only; the
+// seeds include one (1130, many holes) whose warped corner near the origin
+// needed many ulp steps to be rounded onto its segment.
+TEST(QuadMeshProperty, HardGeneratorSettingsAreValid) {
+  test::PolygonOptions holes;
+  holes.max_holes = 12;
+  holes.max_vertices = 60;
+  holes.near_touch_probability = 0.8;
+  holes.min_gap = 1e-5;
+  test::PolygonOptions spikes;
+  spikes.spike_probability = 0.9;
+  spikes.min_spike_degrees = 0.5;
+  spikes.snap_probability = 0.6;
+  test::PolygonOptions coarse;
+  coarse.grid_bits = 8;
+  coarse.snap_probability = 0.9;
+  int meshed = 0;
+  for (const test::PolygonOptions* o : {&holes, &spikes, &coarse}) {
+    std::vector<std::uint64_t> seeds;
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) seeds.push_back(seed);
+    if (o == &holes) seeds.push_back(1130);
+    for (const std::uint64_t seed : seeds) {
+      const Domain2 d = make_domain(test::random_polygon_with_holes(seed, *o));
+      const QuadMeshResult r = quad_mesh(d);
+      const CheckReport check = check_mesh(r.mesh, d);
+      ASSERT_TRUE(check.valid()) << test::describe_polygon(seed, *o) << "\n" << check.to_text();
+      ++meshed;
+    }
+  }
+  EXPECT_EQ(meshed, 91);
+}
+
 }  // namespace
 }  // namespace pqmesh
