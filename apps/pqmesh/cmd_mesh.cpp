@@ -25,9 +25,6 @@
 namespace pqmesh::cli {
 namespace {
 
-// The angle guarantee printed with every mesh (include/pqmesh/quadmesh_bound.hpp).
-constexpr double kBoundC = kQuadMeshBoundC;
-constexpr double kBoundTheta0Degrees = kQuadMeshBoundTheta0Degrees;
 
 // Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`).
 // Twice the library default 1/8: a quarter of the cells for about 1% change
@@ -108,14 +105,19 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
   }
 
   const AlphaResult alpha = compute_alpha(domain.pslg.vertices, domain.loops);
-  const double bound = std::min(kBoundC * alpha.degrees(), kBoundTheta0Degrees);
+  // The measured angle guarantee (include/pqmesh/quadmesh_bound.hpp).
+  const bool refined = run.options.refine_angle_degrees >= 20;
+  const double c = refined ? kQuadMeshBoundC : kQuadMeshUnrefinedBoundC;
+  const double theta0 = refined ? kQuadMeshBoundTheta0Degrees : kQuadMeshUnrefinedBoundTheta0Degrees;
+  const double bound = quad_mesh_angle_bound(alpha.degrees(), run.options.refine_angle_degrees);
   const QualityReport q = quality_report(mesh);
   std::cout << "alpha      " << alpha.describe(domain.pslg.source.first_id) << '\n'
-            << "bound      min angle >= min(" << fmt(kBoundC) << " * alpha, " << fmt(kBoundTheta0Degrees)
-            << " deg) = " << fmt4(bound) << " deg\n"
+            << "bound      min angle >= min(" << fmt(c) << " * alpha, " << fmt(theta0) << " deg) = " << fmt4(std::min(c * alpha.degrees(), theta0))
+            << " deg" << (refined && alpha.degrees() >= 60 ? " (20 deg: alpha >= 60)" : "")
+            << (refined ? "" : " (without refinement)") << '\n'
             << "angles     min " << fmt4(q.min_angle.min) << " deg (triangle " << q.min_angle.argmin << "), max "
             << fmt4(q.max_angle.max) << " deg (triangle " << q.max_angle.argmax << "); "
-            << (q.min_angle.min >= bound ? "bound holds" : "BELOW THE BOUND") << '\n'
+            << (q.min_angle.min >= bound - 1e-9 ? "bound holds" : "BELOW THE BOUND") << '\n'
             << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
   // I(P) with the Euclidean lfs (pqmesh/lfs.hpp): up to a constant, a lower
   // bound on the triangles of any bounded-angle mesh of P, except across
@@ -131,6 +133,14 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
             << s.splits_protection << '\n'
             << "boxes      " << s.vertex_boxes << " vertex boxes (" << s.centered << " centered), " << s.warped
             << " warped corners, " << s.edge_points << " edge points\n"
+            << "refine     "
+            << (run.options.refine_angle_degrees > 0
+                    ? "target " + fmt(run.options.refine_angle_degrees) + " deg: " + std::to_string(s.refine_points) +
+                          " points added, " +
+                          (s.refine_target_reached ? "reached (triangles at input angles < 60 deg excused)"
+                                                   : "not reached everywhere")
+                    : std::string("off"))
+            << '\n'
             << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
             << ", triangulate " << fmt_seconds(s.seconds_triangulate) << "; mesh " << fmt_seconds(run.seconds_mesh)
             << ", check " << fmt_seconds(run.seconds_check) << ", lfs " << fmt_seconds(run.seconds_lfs) << '\n'
@@ -143,7 +153,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 }  // namespace
 
 int run_mesh(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--protect-edges"}, {"-o", "--output", "--max-size", "--size-field", "--format"});
+  const Args args(argv, {"--quiet", "--protect-edges"},
+                  {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   MeshRun run;
   run.input = args.positional()[0];
@@ -153,6 +164,12 @@ int run_mesh(const std::vector<std::string>& argv) {
   run.output = *out;
   run.options.max_size = max_size_option(args);
   run.options.protect_edges = args.flag("--protect-edges");
+  if (args.option("--refine-angle")) {
+    const double a = args.number("--refine-angle", 0);  // throws UsageError unless a finite number
+    if (!(a >= 0 && a <= 30))
+      throw UsageError("--refine-angle must be between 0 (off) and 30 degrees, got '" + *args.option("--refine-angle") + "'");
+    run.options.refine_angle_degrees = a;
+  }
   const std::optional<MeshFormat> forced = format_option(args);
   // Unknown extension: ParseError(Unsupported), exit 2 before any work is done.
   run.format = forced ? *forced : mesh_format_from_path(run.output);

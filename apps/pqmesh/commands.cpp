@@ -21,8 +21,8 @@ const std::vector<Command>& commands() {
        "Exit 0 when the domain is valid, 2 with the offending ids and file line when it is not.\n",
        run_info},
       {"mesh", "mesh a 2D domain (quadtree mesher, bounded angles); check and write the mesh",
-       "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--protect-edges]\n"
-       "                   [--format F] [--quiet]\n"
+       "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--refine-angle DEG]\n"
+       "                   [--protect-edges] [--format F] [--quiet]\n"
        "\n"
        "Meshes a 2D polygon with holes (Triangle .poly) with the quadtree mesher, the 2D analog of\n"
        "thesis ch. 4 (docs/ALGORITHM.md section 8): every angle is at least min(C * alpha, THETA0),\n"
@@ -40,6 +40,9 @@ const std::vector<Command>& commands() {
        "  --max-size S         no quadtree box side longer than S (S > 0)\n"
        "  --size-field FILE    desired sizes at points, one 'x y size' per line ('#' comments); the\n"
        "                       size asked for at x is the min over the points of size + |x - point|\n"
+       "  --refine-angle DEG   Delaunay refinement of the quadtree triangulation towards DEG (default\n"
+       "                       20; 0 turns it off; at most 30); triangles at input angles below 60\n"
+       "                       degrees are excused\n"
        "  --protect-edges      thesis 4.1.4-4.1.5 edge protection: split every box on an input edge\n"
        "                       once more (off by default: more triangles, no better angles)\n"
        "  --quiet              print nothing on success\n"

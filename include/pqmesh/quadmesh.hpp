@@ -36,6 +36,10 @@ struct QuadMeshOptions {
   // it doubles the boundary resolution and lowers the min angle next to
   // vertex boxes (measurements: docs/ALGORITHM.md §8.4). CLI --protect-edges.
   bool protect_edges = false;
+  // Delaunay refinement of the quadtree's triangulation towards this smallest
+  // angle, in degrees (0: off). Triangles at input angles below 60 degrees are
+  // excused (docs/ALGORITHM.md §8.10). CLI --refine-angle DEG.
+  double refine_angle_degrees = 20;
 };
 
 // Counters and timings of one run, for the CLI summary and the benchmark.
@@ -53,6 +57,8 @@ struct QuadMeshStats {
   std::int64_t centered = 0;          // of those, united into a 2x2 box around the vertex (Lemma 1)
   std::int64_t warped = 0;            // box corners moved onto an input edge (§4.3 analog)
   std::int64_t edge_points = 0;       // crossings of box sides with input edges kept as vertices
+  std::int64_t refine_points = 0;     // vertices added by the refinement pass
+  bool refine_target_reached = false; // every triangle not excused meets refine_angle_degrees
   double seconds_tree = 0, seconds_points = 0, seconds_triangulate = 0;
 };
 

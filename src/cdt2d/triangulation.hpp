@@ -72,7 +72,10 @@ class Triangulation {
   // begin_refinement takes the inside labels of inside_triangles(); from then
   // on every operation keeps them, the constraint bits and vtri_ up to date.
   void begin_refinement(std::vector<std::uint8_t> inside);
-  bool inside(int t) const { return inside_[static_cast<std::size_t>(t)] != 0; }
+  bool inside(int t) const { return inside_[static_cast<std::size_t>(t)] == kLabelInside; }
+  // A real outside triangle whose region is known to be disjoint from the
+  // inside triangles (see split_constrained_edge).
+  bool trusted_outside(int t) const { return !is_ghost(t) && inside_[static_cast<std::size_t>(t)] == kLabelTrusted; }
   int vertex_triangle(int v) const { return vtri_[static_cast<std::size_t>(v)]; }
   int index_of(int t, int v) const { return index_in(t, v); }
   int half_edge(int u, int v) const { return find_half_edge(u, v); }
@@ -132,7 +135,8 @@ class Triangulation {
 
   const std::vector<Vec2>& pts_;
   std::vector<Tri> tris_;
-  std::vector<std::uint8_t> inside_;         // phase 4: 1 for triangles inside the domain
+  static constexpr std::uint8_t kLabelTrusted = 0, kLabelInside = 1, kLabelUntrusted = 2;
+  std::vector<std::uint8_t> inside_;         // phase 4: kLabelInside, kLabelTrusted or kLabelUntrusted per triangle
   std::vector<std::uint8_t> cons_;           // bit i of cons_[t]: edge i of t is constrained (phase 2 only)
   std::vector<int> vtri_;                    // phase 2: a triangle incident to each vertex
   std::vector<std::array<int, 2>> pieces_;   // constrained pieces, directed as given

@@ -206,6 +206,14 @@ void Checker2::check_listed_edges() {
     listed.push_back({std::min(e[0], e[1]), std::max(e[0], e[1]), static_cast<int>(i)});
   }
   std::sort(listed.begin(), listed.end());
+  for (const auto& e : boundary_) {
+    const std::array<int, 3> lo{std::min(e[0], e[1]), std::max(e[0], e[1]), -1};
+    const auto it = std::lower_bound(listed.begin(), listed.end(), lo);
+    if (it == listed.end() || (*it)[0] != lo[0] || (*it)[1] != lo[1])
+      sink_.add(CheckKind::BoundaryFace, {lo[0], lo[1]},
+                "boundary edge (" + std::to_string(lo[0]) + " " + std::to_string(lo[1]) +
+                    ") is missing from TriMesh2::edges");
+  }
   for (std::size_t k = 0; k < listed.size(); ++k) {
     const int l = listed[k][2];
     const std::string head = "listed edge " + std::to_string(l) + " (" + format_ids(m_.edges[l]) + ") ";
@@ -214,14 +222,6 @@ void Checker2::check_listed_edges() {
       sink_.add(CheckKind::BoundaryFace, {l}, head + "is not an edge of the mesh");
     else if (k > 0 && listed[k - 1][0] == key[0] && listed[k - 1][1] == key[1])
       sink_.add(CheckKind::BoundaryFace, {l}, head + "is listed more than once");
-  }
-  for (const auto& e : boundary_) {
-    const std::array<int, 3> lo{std::min(e[0], e[1]), std::max(e[0], e[1]), -1};
-    const auto it = std::lower_bound(listed.begin(), listed.end(), lo);
-    if (it == listed.end() || (*it)[0] != lo[0] || (*it)[1] != lo[1])
-      sink_.add(CheckKind::BoundaryFace, {lo[0], lo[1]},
-                "boundary edge (" + std::to_string(lo[0]) + " " + std::to_string(lo[1]) +
-                    ") is missing from TriMesh2::edges");
   }
 }
 

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "cdt2d/constrained_delaunay.hpp"
+#include "cdt2d/refine.hpp"
 #include "pqmesh/errors.hpp"
 #include "pqmesh/quadmesh.hpp"
 #include "quad2d/mesh_points.hpp"
@@ -84,6 +85,7 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
   TriMesh2& mesh = result.mesh;
   const bool seg_markers = !domain.pslg.segment_markers.empty();
   // Boundary constraints: every loop side, as its chain of points, interior on the left.
+  std::vector<int> constraint_segment;
   for (std::size_t l = 0; l < domain.loops.size(); ++l) {
     const auto& loop = domain.loops[l];
     for (std::size_t k = 0; k < loop.size(); ++k) {
@@ -94,31 +96,54 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
         int u = new_id[static_cast<std::size_t>(chain[j])], w = new_id[static_cast<std::size_t>(chain[j + 1])];
         if (!forward) std::swap(u, w);
         in.constraints.push_back({u, w});
-        mesh.edges.push_back({u, w});
-        if (seg_markers) mesh.edge_markers.push_back(domain.pslg.segment_markers[static_cast<std::size_t>(s)]);
+        constraint_segment.push_back(s);
       }
     }
   }
-  cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
+  std::vector<int> piece_segment;  // per output boundary piece: its input segment
+  if (options.refine_angle_degrees > 0) {
+    // Optional Delaunay refinement of the quadtree's triangulation
+    // (docs/ALGORITHM.md §8.10): Steiner points on a side are rounded onto the
+    // input segment, which the support tells the refiner.
+    cdt2d::SegmentSupport support;
+    support.constraint_segment = constraint_segment;
+    for (const auto& seg : domain.pslg.segments)
+      support.segment_ends.push_back(
+          {domain.pslg.vertices[static_cast<std::size_t>(seg[0])], domain.pslg.vertices[static_cast<std::size_t>(seg[1])]});
+    cdt2d::RefineOptions ro;
+    ro.min_angle_degrees = options.refine_angle_degrees;
+    ro.max_new_points = std::max<std::size_t>(in.points.size(), 1000);
+    cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(in, ro, support);
+    stats.refine_points = static_cast<std::int64_t>(rr.inserted);
+    stats.refine_target_reached = rr.target_reached;
+    mesh.vertices = std::move(rr.points);
+    mesh.triangles = std::move(rr.triangles);
+    mesh.edges = std::move(rr.constraints);
+    for (const int origin : rr.constraint_origin)
+      piece_segment.push_back(constraint_segment[static_cast<std::size_t>(origin)]);
+  } else {
+    cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
+    mesh.vertices = std::move(in.points);
+    mesh.triangles = std::move(out.triangles);
+    mesh.edges = std::move(in.constraints);
+    piece_segment = std::move(constraint_segment);
+  }
   stats.seconds_triangulate = seconds_since(t0);
 
-  mesh.vertices = std::move(in.points);
-  mesh.triangles = std::move(out.triangles);
+  if (seg_markers)
+    for (const int s : piece_segment) mesh.edge_markers.push_back(domain.pslg.segment_markers[static_cast<std::size_t>(s)]);
   if (!domain.pslg.vertex_markers.empty()) {
     // Input vertices keep their marker; Steiner points on a segment take the
     // segment's marker (Triangle's convention); interior points get 0.
     mesh.vertex_markers.assign(mesh.vertices.size(), 0);
+    if (seg_markers)
+      for (std::size_t e = 0; e < mesh.edges.size(); ++e)
+        for (const int v : mesh.edges[e])
+          mesh.vertex_markers[static_cast<std::size_t>(v)] = domain.pslg.segment_markers[static_cast<std::size_t>(piece_segment[e])];
     for (std::size_t i = 0; i < mp.points.size(); ++i)
       if (mp.input_vertex[i] >= 0)
         mesh.vertex_markers[static_cast<std::size_t>(new_id[i])] =
             domain.pslg.vertex_markers[static_cast<std::size_t>(mp.input_vertex[i])];
-    if (seg_markers)
-      for (std::size_t s = 0; s < mp.segment_chain.size(); ++s) {
-        const auto& chain = mp.segment_chain[s];
-        for (std::size_t j = 1; j + 1 < chain.size(); ++j)
-          mesh.vertex_markers[static_cast<std::size_t>(new_id[static_cast<std::size_t>(chain[j])])] =
-              domain.pslg.segment_markers[s];
-      }
   }
   int attribute = 0;
   if (region_attribute(domain, attribute)) mesh.triangle_markers.assign(mesh.triangles.size(), attribute);
