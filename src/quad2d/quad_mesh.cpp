@@ -66,13 +66,15 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
   QuadMeshStats& stats = result.stats;
 
   auto t0 = Clock::now();
-  quad2d::QuadtreeBuilder builder(domain, size, options.protect_edges, stats);
-  builder.build();
-  stats.seconds_tree = seconds_since(t0);
-
-  t0 = Clock::now();
-  const quad2d::MeshPoints mp = quad2d::generate_points(builder, stats);
-  stats.seconds_points = seconds_since(t0);
+  quad2d::MeshPoints mp;
+  {  // the tree is released before the triangulation (peak memory)
+    quad2d::QuadtreeBuilder builder(domain, size, options.protect_edges, stats);
+    builder.build();
+    stats.seconds_tree = seconds_since(t0);
+    t0 = Clock::now();
+    mp = quad2d::generate_points(builder, stats);
+    stats.seconds_points = seconds_since(t0);
+  }
 
   t0 = Clock::now();
   // Renumber the points in z-order; the mesh keeps that order.
