@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "plc/polygon2d.hpp"
-#include "predicates/predicates.hpp"
 
 namespace pqmesh::detail {
 
@@ -48,10 +47,7 @@ Location DomainLocator2::locate(Vec2 p) const {
     const Vec2 u = P[static_cast<std::size_t>(edges_[static_cast<std::size_t>(i)][0])];
     const Vec2 w = P[static_cast<std::size_t>(edges_[static_cast<std::size_t>(i)][1])];
     if (on_segment(p, u, w)) return Location::Boundary;
-    const bool u_above = u.y > p.y, w_above = w.y > p.y;  // y == p.y counts as below (p.y + eps)
-    if (u_above == w_above) continue;
-    const Sign o = u_above ? orient2d(w, u, p) : orient2d(u, w, p);
-    if (o == Sign::Positive) inside = !inside;
+    if (ray_crosses_edge(p, u, w)) inside = !inside;
   }
   return inside ? Location::Inside : Location::Outside;
 }

@@ -81,14 +81,17 @@ PointInLoop locate_in_loop(Vec2 p, const std::vector<Vec2>& pts, const std::vect
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2 u = pts[loop[k]], w = pts[loop[(k + 1) % n]];
     if (on_segment(p, u, w)) return PointInLoop::Boundary;
-    const bool u_above = u.y > p.y, w_above = w.y > p.y;  // y == p.y counts as below (p.y + eps)
-    if (u_above == w_above) continue;
-    // The edge crosses the line y = p.y + eps; the crossing is right of p iff
-    // p is left of the edge directed upwards.
-    const Sign o = u_above ? orient2d(w, u, p) : orient2d(u, w, p);
-    if (o == Sign::Positive) inside = !inside;
+    if (ray_crosses_edge(p, u, w)) inside = !inside;
   }
   return inside ? PointInLoop::Inside : PointInLoop::Outside;
+}
+
+bool ray_crosses_edge(Vec2 p, Vec2 u, Vec2 w) {
+  const bool u_above = u.y > p.y, w_above = w.y > p.y;  // y == p.y counts as below (p.y + eps)
+  if (u_above == w_above) return false;
+  // The edge crosses the line y = p.y + eps; the crossing is right of p iff
+  // p is left of the edge directed upwards.
+  return (u_above ? orient2d(w, u, p) : orient2d(u, w, p)) == Sign::Positive;
 }
 
 Sign loop_turn(const std::vector<Vec2>& pts, const std::vector<int>& loop) {

@@ -44,6 +44,10 @@ enum class PointInLoop { Inside, Boundary, Outside };
 // edge (exact).
 PointInLoop locate_in_loop(Vec2 p, const std::vector<Vec2>& pts, const std::vector<int>& loop);
 
+// The ray of locate_in_loop (from p towards +x at height p.y + epsilon)
+// crosses the edge uw. Precondition: p is not on uw. Exact.
+bool ray_crosses_edge(Vec2 p, Vec2 u, Vec2 w);
+
 // Exact turn of a simple loop (no repeated or touching parts): the turn at its
 // lexicographically smallest vertex (a convex corner). Positive = counter-clockwise.
 Sign loop_turn(const std::vector<Vec2>& pts, const std::vector<int>& loop);

@@ -58,6 +58,94 @@ bool region_attribute(const Domain2& d, int& attribute) {
   return false;
 }
 
+// The mesh vertices in z-order (the mesh keeps that order) and every loop
+// side as the chain of its points, interior on the left. new_id maps a
+// MeshPoints index to its mesh id; constraint_segment gives each constraint's
+// input segment.
+cdt2d::CdtInput ordered_input(const Domain2& domain, const quad2d::MeshPoints& mp, std::vector<int>& new_id,
+                              std::vector<int>& constraint_segment) {
+  const std::vector<int> order = z_order(mp.points, domain.bbox_min, domain.bbox_max);
+  new_id.assign(order.size(), -1);
+  cdt2d::CdtInput in;
+  in.points.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    new_id[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+    in.points[i] = mp.points[static_cast<std::size_t>(order[i])];
+  }
+  for (std::size_t l = 0; l < domain.loops.size(); ++l) {
+    const auto& loop = domain.loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int s = domain.loop_segments[l][k];
+      const auto& chain = mp.segment_chain[static_cast<std::size_t>(s)];
+      const bool forward = domain.pslg.segments[static_cast<std::size_t>(s)][0] == loop[k];
+      for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
+        int u = new_id[static_cast<std::size_t>(chain[j])], w = new_id[static_cast<std::size_t>(chain[j + 1])];
+        if (!forward) std::swap(u, w);
+        in.constraints.push_back({u, w});
+        constraint_segment.push_back(s);
+      }
+    }
+  }
+  return in;
+}
+
+// The constrained Delaunay triangulation of the points, refined when asked
+// (docs/ALGORITHM.md §8.6, §8.10). Fills the mesh's vertices, triangles and
+// boundary pieces; piece_segment gives each piece's input segment.
+void triangulate(const Domain2& domain, cdt2d::CdtInput in, const std::vector<int>& constraint_segment,
+                 const QuadMeshOptions& options, QuadMeshStats& stats, TriMesh2& mesh,
+                 std::vector<int>& piece_segment) {
+  if (options.refine_angle_degrees <= 0) {
+    cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
+    mesh.vertices = std::move(in.points);
+    mesh.triangles = std::move(out.triangles);
+    mesh.edges = std::move(in.constraints);
+    piece_segment = constraint_segment;
+    return;
+  }
+  // Steiner points on a side are rounded onto its input segment, which the
+  // support tells the refiner.
+  cdt2d::SegmentSupport support;
+  support.constraint_segment = constraint_segment;
+  for (const auto& seg : domain.pslg.segments)
+    support.segment_ends.push_back(
+        {domain.pslg.vertices[static_cast<std::size_t>(seg[0])], domain.pslg.vertices[static_cast<std::size_t>(seg[1])]});
+  cdt2d::RefineOptions ro;
+  ro.min_angle_degrees = options.refine_angle_degrees;
+  ro.max_new_points = std::max<std::size_t>(in.points.size(), 1000);
+  cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(in, ro, support);
+  stats.refine_points = static_cast<std::int64_t>(rr.inserted);
+  stats.refine_target_reached = rr.target_reached;
+  mesh.vertices = std::move(rr.points);
+  mesh.triangles = std::move(rr.triangles);
+  mesh.edges = std::move(rr.constraints);
+  for (const int origin : rr.constraint_origin)
+    piece_segment.push_back(constraint_segment[static_cast<std::size_t>(origin)]);
+}
+
+// Markers: boundary pieces take their segment's marker; input vertices keep
+// theirs, Steiner points on a segment take the segment's (Triangle's
+// convention), interior points get 0; the triangles take the region attribute.
+void assign_markers(const Domain2& domain, const quad2d::MeshPoints& mp, const std::vector<int>& new_id,
+                    const std::vector<int>& piece_segment, TriMesh2& mesh) {
+  const auto& seg_markers = domain.pslg.segment_markers;
+  if (!seg_markers.empty())
+    for (const int s : piece_segment) mesh.edge_markers.push_back(seg_markers[static_cast<std::size_t>(s)]);
+  if (!domain.pslg.vertex_markers.empty()) {
+    mesh.vertex_markers.assign(mesh.vertices.size(), 0);
+    if (!seg_markers.empty())
+      for (std::size_t e = 0; e < mesh.edges.size(); ++e)
+        for (const int v : mesh.edges[e])
+          mesh.vertex_markers[static_cast<std::size_t>(v)] = seg_markers[static_cast<std::size_t>(piece_segment[e])];
+    for (std::size_t i = 0; i < mp.points.size(); ++i)
+      if (mp.input_vertex[i] >= 0)
+        mesh.vertex_markers[static_cast<std::size_t>(new_id[i])] =
+            domain.pslg.vertex_markers[static_cast<std::size_t>(mp.input_vertex[i])];
+  }
+  int attribute = 0;
+  if (region_attribute(domain, attribute)) mesh.triangle_markers.assign(mesh.triangles.size(), attribute);
+}
+
 }  // namespace
 
 QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) {
@@ -77,78 +165,11 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
   }
 
   t0 = Clock::now();
-  // Renumber the points in z-order; the mesh keeps that order.
-  const std::vector<int> order = z_order(mp.points, domain.bbox_min, domain.bbox_max);
-  std::vector<int> new_id(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) new_id[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
-  cdt2d::CdtInput in;
-  in.points.resize(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) in.points[i] = mp.points[static_cast<std::size_t>(order[i])];
-  TriMesh2& mesh = result.mesh;
-  const bool seg_markers = !domain.pslg.segment_markers.empty();
-  // Boundary constraints: every loop side, as its chain of points, interior on the left.
-  std::vector<int> constraint_segment;
-  for (std::size_t l = 0; l < domain.loops.size(); ++l) {
-    const auto& loop = domain.loops[l];
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const int s = domain.loop_segments[l][k];
-      const auto& chain = mp.segment_chain[static_cast<std::size_t>(s)];
-      const bool forward = domain.pslg.segments[static_cast<std::size_t>(s)][0] == loop[k];
-      for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
-        int u = new_id[static_cast<std::size_t>(chain[j])], w = new_id[static_cast<std::size_t>(chain[j + 1])];
-        if (!forward) std::swap(u, w);
-        in.constraints.push_back({u, w});
-        constraint_segment.push_back(s);
-      }
-    }
-  }
-  std::vector<int> piece_segment;  // per output boundary piece: its input segment
-  if (options.refine_angle_degrees > 0) {
-    // Optional Delaunay refinement of the quadtree's triangulation
-    // (docs/ALGORITHM.md §8.10): Steiner points on a side are rounded onto the
-    // input segment, which the support tells the refiner.
-    cdt2d::SegmentSupport support;
-    support.constraint_segment = constraint_segment;
-    for (const auto& seg : domain.pslg.segments)
-      support.segment_ends.push_back(
-          {domain.pslg.vertices[static_cast<std::size_t>(seg[0])], domain.pslg.vertices[static_cast<std::size_t>(seg[1])]});
-    cdt2d::RefineOptions ro;
-    ro.min_angle_degrees = options.refine_angle_degrees;
-    ro.max_new_points = std::max<std::size_t>(in.points.size(), 1000);
-    cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(in, ro, support);
-    stats.refine_points = static_cast<std::int64_t>(rr.inserted);
-    stats.refine_target_reached = rr.target_reached;
-    mesh.vertices = std::move(rr.points);
-    mesh.triangles = std::move(rr.triangles);
-    mesh.edges = std::move(rr.constraints);
-    for (const int origin : rr.constraint_origin)
-      piece_segment.push_back(constraint_segment[static_cast<std::size_t>(origin)]);
-  } else {
-    cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
-    mesh.vertices = std::move(in.points);
-    mesh.triangles = std::move(out.triangles);
-    mesh.edges = std::move(in.constraints);
-    piece_segment = std::move(constraint_segment);
-  }
+  std::vector<int> new_id, constraint_segment, piece_segment;
+  cdt2d::CdtInput in = ordered_input(domain, mp, new_id, constraint_segment);
+  triangulate(domain, std::move(in), constraint_segment, options, stats, result.mesh, piece_segment);
   stats.seconds_triangulate = seconds_since(t0);
-
-  if (seg_markers)
-    for (const int s : piece_segment) mesh.edge_markers.push_back(domain.pslg.segment_markers[static_cast<std::size_t>(s)]);
-  if (!domain.pslg.vertex_markers.empty()) {
-    // Input vertices keep their marker; Steiner points on a segment take the
-    // segment's marker (Triangle's convention); interior points get 0.
-    mesh.vertex_markers.assign(mesh.vertices.size(), 0);
-    if (seg_markers)
-      for (std::size_t e = 0; e < mesh.edges.size(); ++e)
-        for (const int v : mesh.edges[e])
-          mesh.vertex_markers[static_cast<std::size_t>(v)] = domain.pslg.segment_markers[static_cast<std::size_t>(piece_segment[e])];
-    for (std::size_t i = 0; i < mp.points.size(); ++i)
-      if (mp.input_vertex[i] >= 0)
-        mesh.vertex_markers[static_cast<std::size_t>(new_id[i])] =
-            domain.pslg.vertex_markers[static_cast<std::size_t>(mp.input_vertex[i])];
-  }
-  int attribute = 0;
-  if (region_attribute(domain, attribute)) mesh.triangle_markers.assign(mesh.triangles.size(), attribute);
+  assign_markers(domain, mp, new_id, piece_segment, result.mesh);
   return result;
 }
 

@@ -179,6 +179,16 @@ ExtendedFaces QuadtreeBuilder::extended_faces(std::int32_t node) const {
   return {f.vertices, f.edges};
 }
 
+std::int32_t QuadtreeBuilder::split_and_balance(std::int32_t node) {
+  const std::int32_t before = tree_.size();
+  split(node);
+  std::vector<std::int32_t> fresh;
+  for (std::int32_t id = before; id < tree_.size(); ++id)
+    if (tree_.is_leaf(id)) fresh.push_back(id);
+  balance(fresh);
+  return before;
+}
+
 void QuadtreeBuilder::balance(std::span<const std::int32_t> seeds) {
   stats_.splits_balance += tree_.balance(
       seeds, [this](std::int32_t big, std::int32_t small) { return balance_adjacent(big, small); },
@@ -253,13 +263,8 @@ void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(st
     if (tree_.level(n) >= tree_.max_level())
       throw InternalError("quad2d: refinement reached the deepest representable level (phase " +
                           std::to_string(static_cast<int>(phase)) + ")");
-    const std::int32_t before = tree_.size();
-    split(n);
+    const std::int32_t before = split_and_balance(n);
     ++counter;
-    std::vector<std::int32_t> fresh;
-    for (std::int32_t id = before; id < tree_.size(); ++id)
-      if (tree_.is_leaf(id)) fresh.push_back(id);
-    balance(fresh);
     for (std::int32_t id = before; id < tree_.size(); ++id)
       if (tree_.is_leaf(id)) work.push_back(id);
   }
@@ -288,13 +293,8 @@ void QuadtreeBuilder::center_vertices() {
       tree_.larger_neighbours(b, big);
       for (const std::int32_t n : big) {
         if (!tree_.is_leaf(n) || tree_.is_protected(n) || !balance_adjacent(n, b)) continue;
-        const std::int32_t before = tree_.size();
-        split(n);
+        split_and_balance(n);
         ++stats_.splits_centering;
-        std::vector<std::int32_t> fresh;
-        for (std::int32_t id = before; id < tree_.size(); ++id)
-          if (tree_.is_leaf(id)) fresh.push_back(id);
-        balance(fresh);
         again = true;
       }
       if (!tree_.is_leaf(b)) throw InternalError("quad2d: a vertex box was split during centering");
@@ -346,13 +346,8 @@ void QuadtreeBuilder::protect_edges() {
     if (data(n).has_component && !data(n).segments.empty() && !tree_.is_protected(n)) targets.push_back(n);
   for (const std::int32_t n : targets) {
     if (!tree_.is_leaf(n)) continue;
-    const std::int32_t before = tree_.size();
-    split(n);
+    split_and_balance(n);
     ++stats_.splits_protection;
-    std::vector<std::int32_t> fresh;
-    for (std::int32_t id = before; id < tree_.size(); ++id)
-      if (tree_.is_leaf(id)) fresh.push_back(id);
-    balance(fresh);
   }
   for (const std::int32_t n : leaves_by_id())
     if (data(n).has_component && !data(n).segments.empty()) tree_.set_protected(n, true);

@@ -89,6 +89,10 @@ class QuadtreeBuilder {
   void assign_children(std::int32_t parent, std::int32_t first_child);
   std::int32_t split(std::int32_t node);
   void balance(std::span<const std::int32_t> seeds);
+  // Thesis §4.1.1: "If we split a box, we immediately split other boxes to
+  // maintain ... the balance condition." Returns the first new node id (every
+  // node created by the split and the balancing has an id >= it).
+  std::int32_t split_and_balance(std::int32_t node);
   bool balance_adjacent(std::int32_t big, std::int32_t small) const;
   ExtendedFaces extended_faces(std::int32_t node) const;
   int extended_component(std::int32_t node, const SquareComponents& ex) const;
