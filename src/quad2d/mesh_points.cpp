@@ -91,13 +91,21 @@ class PointGenerator {
   MeshPoints run() {
     collect_corners();
     find_crossings();
+    release(by_x_);  // peak memory: each table goes as soon as it has served
+    release(by_y_);
     place_corners();
+    release(corners_);
     place_crossings();
     return assemble();
   }
 
  private:
   Vec2 vertex(int v) const { return d_.pslg.vertices[static_cast<std::size_t>(v)]; }
+
+  template <class T>
+  static void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+  }
 
   // p is closer to input vertex v than Lemma 1's clearance (a construction
   // compared with a threshold: either outcome is valid, docs/ALGORITHM.md §8.5).
