@@ -26,6 +26,7 @@ int run_mesh(const std::vector<std::string>& args);
 int run_check(const std::vector<std::string>& args);
 int run_quality(const std::vector<std::string>& args);
 int run_convert(const std::vector<std::string>& args);
+int run_octree(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();
 

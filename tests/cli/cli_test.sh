@@ -166,5 +166,14 @@ expect 2 "mesh with a missing size field" -- "$pqmesh" mesh "$data/2d/square.pol
   --size-field "$work/no_such_field.txt"
 if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "refused mesh runs left files: $(ls "$work" | grep -E '^never')"; fi
 
+# pqmesh octree (issue 4): leaf boxes as VTK hexahedra.
+expect 0 "octree cube" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes.vtu"
+contains "$work/cube_boxes.vtu" "UnstructuredGrid" "octree writes a .vtu"
+contains "$work/cube_boxes.vtu" "Name=\"level\"" "octree .vtu has the level field"
+if /usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); sys.exit(0 if m.cells[0].type == 'hexahedron' and len(m.cells[0].data) > 0 else 1)" "$work/cube_boxes.vtu" 2>/dev/null; then ok; else fail "meshio does not read the octree boxes as hexahedra"; fi
+expect 2 "octree of a 2D input" -- "$pqmesh" octree "$data/2d/square.poly" -o "$work/never_octree.vtu"
+expect 64 "octree without -o" -- "$pqmesh" octree "$data/3d/cube.poly"
+if [[ ! -e $work/never_octree.vtu ]]; then ok; else fail "refused octree run left a file"; fi
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -1,0 +1,473 @@
+// The octree phases of the 3D mesher; see octree_builder.hpp.
+#include "mv3d/octree_builder.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "pqmesh/errors.hpp"
+
+namespace pqmesh::mv3d {
+
+namespace {
+
+RootCube<3> root_for(const Domain3& d) {
+  return choose_root_cube<3>({d.bbox_min.x, d.bbox_min.y, d.bbox_min.z}, {d.bbox_max.x, d.bbox_max.y, d.bbox_max.z});
+}
+
+Vec3 centre_of(const Cube& c) { return 0.5 * (c.lo + c.hi); }
+
+// The component of cc holding facet triangle t (t must meet cc's cube), or
+// the component of mark `mark` when t < 0.
+int locate(const CubeComponents& cc, int t, std::size_t mark) {
+  if (t < 0) return cc.mark_component.at(mark);
+  const auto it =
+      std::lower_bound(cc.triangle_component.begin(), cc.triangle_component.end(), std::pair<int, int>{t, -1});
+  if (it == cc.triangle_component.end() || it->first != t)
+    throw InternalError("mv3d octree: a component's triangle does not meet the enclosing box");
+  return it->second;
+}
+
+bool contains(const std::vector<int>& sorted, int x) { return std::binary_search(sorted.begin(), sorted.end(), x); }
+
+bool share(const std::vector<int>& a, const std::vector<int>& b) {
+  for (const int x : a)
+    if (contains(b, x)) return true;
+  return false;
+}
+
+}  // namespace
+
+OctreeBuilder::OctreeBuilder(const Domain3& domain) : domain_(domain), tree_(root_for(domain)) {
+  const Cube nowhere{{1, 1, 1}, {0, 0, 0}};
+  vertex_box_.assign(domain.plc.vertices.size(), nowhere);
+  facet_vertices_.resize(domain.plc.facets.size());
+  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f) {
+    auto& fv = facet_vertices_[f];
+    for (const auto& loop : domain.plc.facets[f].loops) fv.insert(fv.end(), loop.begin(), loop.end());
+    std::sort(fv.begin(), fv.end());
+    fv.erase(std::unique(fv.begin(), fv.end()), fv.end());
+  }
+}
+
+void OctreeBuilder::record_phase(std::int32_t node) {
+  if (phase_.size() <= static_cast<std::size_t>(node))
+    phase_.resize(static_cast<std::size_t>(node) + 1, OctPhase::Root);
+  phase_[static_cast<std::size_t>(node)] = current_phase_;
+}
+
+OctPhase OctreeBuilder::phase(std::int32_t node) const {
+  return static_cast<std::size_t>(node) < phase_.size() ? phase_[static_cast<std::size_t>(node)] : OctPhase::Root;
+}
+
+bool OctreeBuilder::facet_has_vertex(int facet, int v) const {
+  return contains(facet_vertices_[static_cast<std::size_t>(facet)], v);
+}
+
+std::vector<std::int32_t> OctreeBuilder::leaves_by_id() const {
+  std::vector<std::int32_t> out;
+  out.reserve(static_cast<std::size_t>(tree_.leaf_count()));
+  for (std::int32_t n = 0; n < tree_.size(); ++n)
+    if (tree_.is_leaf(n)) out.push_back(n);
+  return out;
+}
+
+Cube OctreeBuilder::cube(std::int32_t node) const {
+  const auto b = tree_.box(node);
+  return {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
+}
+
+NodeData3& OctreeBuilder::own_data(std::int32_t node) {
+  if (tree_.payload(node) == kInterior) {
+    tree_.set_payload(node, static_cast<std::int32_t>(data_.size()));
+    data_.push_back(data_[kInterior]);
+  }
+  return data_[static_cast<std::size_t>(tree_.payload(node))];
+}
+
+void OctreeBuilder::init_root() {
+  tree_.set_payload(0, 0);
+  data_.emplace_back();
+  data_.emplace_back();  // kInterior: a cube inside P with no faces and no vertex box
+  data_[kInterior].has_component = true;
+  const CubeComponents cc = components(domain_, cube(0));
+  if (cc.components.size() != 1)
+    throw InternalError("mv3d octree: the root cube meets P in " + std::to_string(cc.components.size()) +
+                        " components (P is connected and inside it)");
+  NodeData3& d = data_[0];
+  d.cube_tris = triangles_meeting(domain_, cube(0));
+  d.ex_tris = d.cube_tris;
+  d.has_component = true;
+  d.cube_single = true;
+  d.vertices = cc.components[0].vertices;
+  d.edges = cc.components[0].edges;
+  d.facets = cc.components[0].facets;
+  if (!cc.triangle_component.empty()) d.rep_triangle = cc.triangle_component.front().first;
+}
+
+// Thesis §4.1.1: "Whenever a box is split, we immediately determine whether any
+// of its children contains more than one component of P, and if so, we make
+// duplicates of the child box." Children get the components of P ∩ child that
+// lie in P ∧ parent: a component with a facet triangle lies in the parent
+// component of that triangle; a whole-cube child is located by its centre.
+void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_child) {
+  const NodeData3 pd = data(parent);  // copy: data_ grows below
+  const int parent_component = tree_.component(parent);
+  const bool interior = pd.has_component && pd.cube_tris.empty();  // the parent cube lies in P
+  // Children meeting no facet triangle lie inside P or outside it: their
+  // centres are located in the parent's components (marks), which is much
+  // cheaper than components() of the child.
+  std::vector<CubeComponents> child_cc(OctTree::kChildren);
+  std::vector<std::vector<int>> child_tris(OctTree::kChildren);
+  std::vector<Vec3> marks;
+  std::vector<std::size_t> mark_of(OctTree::kChildren, 0);
+  if (!interior && pd.has_component) {
+    for (int k = 0; k < OctTree::kChildren; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const Cube c = cube(first_child + k);
+      child_tris[ku] = triangles_meeting(domain_, c, pd.cube_tris);
+      if (!child_tris[ku].empty()) {
+        child_cc[ku] = components(domain_, c);
+        ++stats_.components_split;
+        continue;
+      }
+      mark_of[ku] = marks.size();
+      marks.push_back(centre_of(c));
+    }
+  }
+  // When the parent's cube meets P in one component, every component of a
+  // child lies in it, and exact point location places the centres.
+  CubeComponents parent_cc;
+  if (!interior && pd.has_component) {
+    if (pd.cube_single) {
+      parent_cc.components.emplace_back();
+      for (const Vec3& m : marks)
+        parent_cc.mark_component.push_back(pqmesh::locate(domain_, m) == Location::Inside ? 0 : -1);
+    } else {
+      parent_cc = components(domain_, cube(parent), true, marks);
+      ++stats_.components_split;
+    }
+  }
+  for (int k = 0; k < OctTree::kChildren; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (interior || !pd.has_component || !child_tris[ku].empty()) continue;
+    // The child misses ∂P: it is the whole cube (inside P) or misses P.
+    if (parent_cc.mark_component[mark_of[ku]] >= 0) {
+      child_cc[ku].components.emplace_back();
+      child_cc[ku].components.back().whole_cube = true;
+    }
+  }
+  for (int k = 0; k < OctTree::kChildren; ++k) record_phase(first_child + k);
+  const bool single_parent = !interior && parent_cc.components.size() == 1;
+  for (int k = 0; k < OctTree::kChildren; ++k) {
+    const std::int32_t child = first_child + k;
+    NodeData3 cd;
+    cd.vertex_owner = pd.vertex_owner;
+    if (!pd.has_component) {  // never split in practice: crowding and balance need a component
+      tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
+      data_.push_back(std::move(cd));
+      continue;
+    }
+    const auto eb = tree_.extended_box(child);
+    const Cube ex{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}};
+    if (interior) {
+      cd.has_component = true;
+      if (!pd.ex_tris.empty()) cd.ex_tris = triangles_meeting(domain_, ex, pd.ex_tris);
+      if (cd.vertex_owner < 0 && cd.ex_tris.empty()) {  // ex(child) ⊂ P, no vertex box: the shared record
+        tree_.set_payload(child, kInterior);
+        continue;
+      }
+      tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
+      data_.push_back(std::move(cd));
+      continue;
+    }
+    cd.cube_tris = std::move(child_tris[static_cast<std::size_t>(k)]);
+    cd.ex_tris = triangles_meeting(domain_, ex, pd.ex_tris);
+    const CubeComponents& sc = child_cc[static_cast<std::size_t>(k)];
+    std::vector<int> mine, rep;  // components of P ∩ child inside P ∧ parent, and their triangles
+    for (std::size_t ci = 0; ci < sc.components.size(); ++ci) {
+      int t = -1;
+      for (const auto& [tri, comp] : sc.triangle_component)
+        if (comp == static_cast<int>(ci)) {
+          t = tri;
+          break;
+        }
+      const int pc = single_parent ? 0 : locate(parent_cc, t, mark_of[static_cast<std::size_t>(k)]);
+      if (pc == parent_component) {
+        mine.push_back(static_cast<int>(ci));
+        rep.push_back(t);
+      }
+    }
+    std::int32_t node = child;
+    for (std::size_t i = 0; i < std::max<std::size_t>(mine.size(), 1); ++i) {
+      if (i > 0) {
+        node = tree_.duplicate(child, mine[i]);
+        ++stats_.duplicates;
+        record_phase(node);
+      }
+      NodeData3 nd = cd;
+      nd.cube_single = sc.components.size() == 1;
+      if (!mine.empty()) {
+        const ComponentFaces3& f = sc.components[static_cast<std::size_t>(mine[i])];
+        nd.has_component = true;
+        nd.vertices = f.vertices;
+        nd.edges = f.edges;
+        nd.facets = f.facets;
+        nd.rep_triangle = rep[i];
+        tree_.set_component(node, mine[i]);
+      }
+      tree_.set_payload(node, static_cast<std::int32_t>(data_.size()));
+      data_.push_back(std::move(nd));
+    }
+  }
+}
+
+CubeComponents OctreeBuilder::extended_components(std::int32_t node, std::span<const Vec3> marks) const {
+  const auto eb = tree_.extended_box(node);
+  return components(domain_, Cube{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}}, true, marks);
+}
+
+int OctreeBuilder::component_in(std::int32_t node, const CubeComponents& ex) const {
+  const int c = locate(ex, data(node).rep_triangle, 0);
+  if (c < 0) throw InternalError("mv3d octree: a box's component is in no component of an enclosing box");
+  return c;
+}
+
+// Thesis §4.1.1: b1, b2 are balance-adjacent iff (P ∧ ex(b1)) ∩ (P ∧ b2) or
+// (P ∧ ex(b2)) ∩ (P ∧ b1) is non-empty. For neighbours with h(big) >= h(small),
+// ex(small) ⊂ ex(big), so this holds iff P ∧ small ⊂ P ∧ ex(big).
+bool OctreeBuilder::balance_adjacent(std::int32_t big, std::int32_t small) const {
+  const NodeData3& db = data(big);
+  const NodeData3& ds = data(small);
+  if (!db.has_component || !ds.has_component) return false;
+  if (db.ex_tris.empty()) return true;  // ex(big) lies in P: one component
+  const CubeComponents& cached = cached_extended(big);
+  // P ∩ ex(big) connected: it holds P ∧ small (small ⊂ ex(big)).
+  if (cached.components.size() == 1) return true;
+  if (ds.rep_triangle >= 0) return locate(cached, ds.rep_triangle, 0) == component_in(big, cached);
+  // Marks only for whole-cube components: their centres are off ∂P (a box
+  // meeting ∂P may have its centre on it).
+  std::vector<Vec3> marks;
+  if (db.rep_triangle < 0) marks.push_back(centre_of(cube(big)));
+  const std::size_t small_mark = marks.size();
+  if (ds.rep_triangle < 0) marks.push_back(centre_of(cube(small)));
+  const CubeComponents ex = extended_components(big, marks);
+  ++stats_.components_adjacency;
+  const int cb = locate(ex, db.rep_triangle, 0);
+  const int cs = locate(ex, ds.rep_triangle, small_mark);
+  if (cb < 0) throw InternalError("mv3d octree: a box's component is in no component of its extended box");
+  return cs == cb;
+}
+
+const CubeComponents& OctreeBuilder::cached_extended(std::int32_t node) const {
+  if (ex_cache_.size() <= static_cast<std::size_t>(node)) ex_cache_.resize(static_cast<std::size_t>(node) + 1);
+  auto& slot = ex_cache_[static_cast<std::size_t>(node)];
+  if (!slot) {
+    const Vec3 mark = centre_of(cube(node));  // used only when P ∧ node is the whole cube
+    const std::span<const Vec3> marks =
+        data(node).rep_triangle >= 0 ? std::span<const Vec3>() : std::span<const Vec3>(&mark, 1);
+    slot = std::make_unique<CubeComponents>(extended_components(node, marks));
+    ++stats_.components_extended;
+  }
+  return *slot;
+}
+
+ExtendedFaces3 OctreeBuilder::extended_faces(std::int32_t node) const {
+  const NodeData3& d = data(node);
+  if (d.ex_tris.empty()) return {};
+  const CubeComponents& ex = cached_extended(node);
+  const ComponentFaces3& f = ex.components[static_cast<std::size_t>(component_in(node, ex))];
+  return {f.vertices, f.edges, f.facets};
+}
+
+std::int32_t OctreeBuilder::split_and_balance(std::int32_t node, OctPhase which) {
+  const std::int32_t before = tree_.size();
+  current_phase_ = which;
+  assign_children(node, tree_.split(node));
+  std::vector<std::int32_t> fresh;
+  for (std::int32_t id = before; id < tree_.size(); ++id)
+    if (tree_.is_leaf(id)) fresh.push_back(id);
+  balance(fresh);
+  return before;
+}
+
+void OctreeBuilder::balance(std::span<const std::int32_t> seeds) {
+  const OctPhase saved = current_phase_;
+  current_phase_ = OctPhase::Balance;
+  stats_.splits_balance += tree_.balance(
+      seeds, [this](std::int32_t big, std::int32_t small) { return balance_adjacent(big, small); },
+      // Tree::split throws InternalError below max_level(): refinement cannot run away silently.
+      [this](std::int32_t n, std::int32_t first) { assign_children(n, first); });
+  current_phase_ = saved;
+}
+
+// Thesis §4.1.3 "Vertex crowded": b holds a P vertex v and P ∧ ex(b) has a face
+// that interferes with v (is not v nor a superface of v).
+bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
+  const NodeData3& d = data(node);
+  if (d.vertices.empty()) return false;
+  if (d.vertices.size() > 1) return true;
+  const int v = d.vertices[0];
+  const ExtendedFaces3 ex = extended_faces(node);
+  if (ex.vertices.size() > 1) return true;
+  for (const int e : ex.edges) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+    if (de.a != v && de.b != v) return true;
+  }
+  for (const int f : ex.facets)
+    if (!facet_has_vertex(f, v)) return true;
+  return false;
+}
+
+// Thesis §4.1.4 "Edge crowded": b (unprotected, no vertex, outside every united
+// vertex box) holds an edge e, and a face G of P ∧ ex(b) other than e and its
+// two superfacets interferes. Vertices are ignored (§4.1.4). Like the 2D edge
+// rule (ALGORITHM.md §8.3), a G that shares a vertex with e interferes only if
+// it meets P ∧ b itself; the thesis instead removes the protected vertex boxes
+// from ex(b), which we do not construct.
+bool OctreeBuilder::edge_crowded(std::int32_t node) const {
+  if (tree_.is_protected(node)) return false;
+  const NodeData3& d = data(node);
+  if (!d.vertices.empty() || d.edges.empty() || d.vertex_owner >= 0) return false;
+  // Two edges in P ∧ b interfere with each other: both lie in P ∧ ex(b), and
+  // one sharing a vertex with the other meets P ∧ b itself.
+  if (d.edges.size() > 1) return true;
+  const DomainEdge& e = domain_.edges[static_cast<std::size_t>(d.edges[0])];
+  const ExtendedFaces3 ex = extended_faces(node);
+  for (const int g : ex.edges) {
+    if (g == d.edges[0]) continue;
+    const DomainEdge& ge = domain_.edges[static_cast<std::size_t>(g)];
+    const bool shares = ge.a == e.a || ge.a == e.b || ge.b == e.a || ge.b == e.b;
+    if (!shares) return true;
+  }
+  for (const int f : ex.facets) {
+    if (f == e.facets[0] || f == e.facets[1]) continue;
+    const bool shares = facet_has_vertex(f, e.a) || facet_has_vertex(f, e.b);
+    if (!shares || contains(d.facets, f)) return true;
+  }
+  return false;
+}
+
+// Thesis §4.1.5 "Facet crowded": b (unprotected: no vertex, no edge, outside
+// every united vertex box — boxes holding edges are the protected edge boxes)
+// holds a facet f, and another facet g lies in P ∧ ex(b). As for edges, a g
+// sharing a vertex with f interferes only if it meets P ∧ b itself.
+bool OctreeBuilder::facet_crowded(std::int32_t node) const {
+  if (tree_.is_protected(node)) return false;
+  const NodeData3& d = data(node);
+  if (!d.vertices.empty() || !d.edges.empty() || d.facets.empty() || d.vertex_owner >= 0) return false;
+  if (d.facets.size() > 1) return true;
+  const int f = d.facets[0];
+  const ExtendedFaces3 ex = extended_faces(node);
+  for (const int g : ex.facets) {
+    if (g == f) continue;
+    if (!share(facet_vertices_[static_cast<std::size_t>(f)], facet_vertices_[static_cast<std::size_t>(g)])) return true;
+  }
+  return false;
+}
+
+void OctreeBuilder::run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const) {
+  std::vector<std::int32_t> work = leaves_by_id();
+  std::int64_t& counter = which == OctPhase::Vertex ? stats_.splits_vertex
+                          : which == OctPhase::Edge ? stats_.splits_edge
+                                                    : stats_.splits_facet;
+  for (std::size_t next = 0; next < work.size(); ++next) {
+    const std::int32_t n = work[next];
+    if (!tree_.is_leaf(n) || !data(n).has_component || !(this->*crowded)(n)) continue;
+    if (tree_.level(n) >= tree_.max_level())
+      throw InternalError("mv3d octree: refinement reached the deepest representable level (phase " +
+                          std::to_string(static_cast<int>(which)) + ")");
+    const std::int32_t before = split_and_balance(n, which);
+    ++counter;
+    for (std::int32_t id = before; id < tree_.size(); ++id)
+      if (tree_.is_leaf(id)) work.push_back(id);
+  }
+}
+
+// §4.1.3 "The vertex centering step", as in 2D (quadtree_builder.cpp): part 1
+// splits the larger balance-adjacent boxes of each vertex box; part 2 records
+// the 2x2x2 block B whose centre is the grid corner nearest v (v is then at
+// least h(b)/2 from every facet of B, Lemma 1), protects the leaf holding v and
+// marks the leaves of v's component inside B with vertex_owner.
+void OctreeBuilder::center_vertices() {
+  const auto& pv = domain_.plc.vertices;
+  std::vector<std::int32_t> vertex_leaf(pv.size(), -1);
+  for (const std::int32_t n : leaves_by_id())
+    for (const int v : data(n).vertices) vertex_leaf[static_cast<std::size_t>(v)] = n;
+  std::vector<std::int32_t> big;
+  for (std::size_t v = 0; v < pv.size(); ++v) {
+    const std::int32_t b = vertex_leaf[v];
+    if (b < 0) continue;
+    for (bool again = true; again;) {
+      again = false;
+      tree_.larger_neighbours(b, big);
+      for (const std::int32_t n : big) {
+        if (!tree_.is_leaf(n) || tree_.is_protected(n) || !balance_adjacent(n, b)) continue;
+        split_and_balance(n, OctPhase::Centering);
+        ++stats_.splits_centering;
+        again = true;
+      }
+      if (!tree_.is_leaf(b)) throw InternalError("mv3d octree: a vertex box was split during centering");
+    }
+    const Cube s = cube(b);
+    const double h = tree_.side(b);
+    const Vec3 p = pv[v];
+    const double x0 = p.x < s.lo.x + 0.5 * h ? s.lo.x - h : s.lo.x;
+    const double y0 = p.y < s.lo.y + 0.5 * h ? s.lo.y - h : s.lo.y;
+    const double z0 = p.z < s.lo.z + 0.5 * h ? s.lo.z - h : s.lo.z;
+    vertex_box_[v] = {{x0, y0, z0}, {x0 + 2 * h, y0 + 2 * h, z0 + 2 * h}};
+    ++stats_.vertex_boxes;
+    tree_.set_protected(b, true);
+  }
+  std::vector<std::int32_t> found;
+  for (std::size_t v = 0; v < pv.size(); ++v) {
+    const std::int32_t b = vertex_leaf[v];
+    if (b < 0) continue;
+    const Cube& r = vertex_box_[v];
+    const double h = tree_.side(b);
+    for (int k = 0; k < 8; ++k) {
+      tree_.leaves_containing(
+          {r.lo.x + (0.5 + (k & 1)) * h, r.lo.y + (0.5 + ((k >> 1) & 1)) * h, r.lo.z + (0.5 + (k >> 2)) * h}, found);
+      for (const std::int32_t n : found) {
+        const Cube s = cube(n);
+        const bool inside = s.lo.x >= r.lo.x && s.lo.y >= r.lo.y && s.lo.z >= r.lo.z && s.hi.x <= r.hi.x &&
+                            s.hi.y <= r.hi.y && s.hi.z <= r.hi.z;
+        if (inside && data(n).has_component && (n == b || balance_adjacent(b, n)))
+          own_data(n).vertex_owner = static_cast<int>(v);
+      }
+    }
+  }
+}
+
+// §4.1.4 "Protecting edge cone boxes": every box containing a P edge, and
+// every box balance-adjacent to one, is protected (never split again). Without
+// it the facet phase would split the boxes along an edge with a small dihedral
+// angle through the balance condition without end. (The thesis first splits
+// every such box once; we omit that separating split.)
+void OctreeBuilder::protect_edge_boxes() {
+  std::vector<std::int32_t> near;
+  for (const std::int32_t n : leaves_by_id()) {
+    if (!data(n).has_component || data(n).edges.empty()) continue;
+    tree_.set_protected(n, true);
+    tree_.neighbours(n, near);
+    for (const std::int32_t m : near) {
+      const bool adjacent = tree_.level(m) <= tree_.level(n) ? balance_adjacent(m, n) : balance_adjacent(n, m);
+      if (adjacent) tree_.set_protected(m, true);
+    }
+  }
+}
+
+void OctreeBuilder::build() {
+  init_root();
+  run_phase(OctPhase::Vertex, &OctreeBuilder::vertex_crowded);
+  center_vertices();
+  run_phase(OctPhase::Edge, &OctreeBuilder::edge_crowded);
+  protect_edge_boxes();
+  run_phase(OctPhase::Facet, &OctreeBuilder::facet_crowded);
+  for (const std::int32_t n : leaves_by_id()) {
+    ++stats_.leaves;
+    if (!data(n).has_component) ++stats_.outside_leaves;
+  }
+}
+
+}  // namespace pqmesh::mv3d

@@ -1,0 +1,127 @@
+#pragma once
+// The octree of the 3D mesher (thesis §4.1, §4.1.7), on the shared Tree<3> of
+// src/tree; mirrors quad2d/quadtree_builder.hpp (docs/ALGORITHM.md §8).
+//
+// Every node carries one component of P ∩ cube (§4.1.1 "Duplicate"): its
+// NodeData3 lists the P vertices/edges/facets of that component and one facet
+// triangle of it (rep_triangle), which identifies the component inside any
+// larger box: a facet triangle meets a convex box in one convex piece, so it
+// lies in exactly one component there (cube_components.hpp). A component with
+// no triangle is the whole cube (cube ⊂ P); its centre then is a point of it
+// off ∂P and is located with components()' marks. Nodes whose extended box
+// lies in P and outside every vertex box share the record kInterior. A P vertex
+// on a box plane lies in every closed cube sharing it (the outward shift of
+// cube_components.hpp), so several leaves may hold it; centering uses one.
+//
+// Phases (thesis §4.1.7):
+//   1. vertex:    split vertex-crowded boxes (§4.1.3);
+//   2. centering: split the larger balance-adjacent boxes of every vertex box,
+//                 then record the 2x2x2 block around the grid corner nearest
+//                 the vertex as its united box (Lemma 1) and protect the leaf
+//                 holding the vertex; leaves of the vertex's component inside
+//                 the block get vertex_owner (as in 2D, ALGORITHM.md §8.2: no
+//                 Tree::merge, so the block still grades towards small boxes);
+//   3. edge:      split edge-crowded boxes (§4.1.4);
+//   4. protect:   protect the edge boxes and their balance-adjacent boxes (§4.1.4);
+//   5. facet:     split facet-crowded boxes (§4.1.5).
+// Balance (§4.1.1) between balance-adjacent boxes is restored after every split
+// (Tree::balance; protected boxes are never split).
+// Deviations (documented at edge_crowded / facet_crowded): extended boxes are not
+// cut by protected boxes; instead a face sharing a vertex with the apex
+// interferes only if it meets P ∧ b itself (the 2D edge rule). The separating
+// splits of §4.1.4-4.1.5 (split every edge/facet box once before protecting)
+// and the protection of facet boxes (no phase follows) are not done.
+// Cost: dominated by components() (exact, GMP-backed): one per child meeting
+// ∂P per split, one per extended box (cached per node), and one per
+// balance-adjacency query involving a box inside P.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "mv3d/cube_components.hpp"
+#include "pqmesh/domain.hpp"
+#include "tree/tree.hpp"
+
+namespace pqmesh::mv3d {
+
+enum class OctPhase : std::uint8_t { Root, Vertex, Centering, Edge, Facet, Balance };
+
+struct NodeData3 {
+  std::vector<int> cube_tris;                // facet triangles meeting the closed cube (all components)
+  std::vector<int> ex_tris;                  // facet triangles meeting ex(b); candidates for the children
+  std::vector<int> vertices, edges, facets;  // P faces of P ∧ b
+  int rep_triangle = -1;                     // a facet triangle meeting P ∧ b, -1 if P ∧ b is the whole cube
+  bool has_component = false;                // false: the cube misses P
+  bool cube_single = false;                  // P ∩ cube has exactly one component (no duplicates of this cube)
+  int vertex_owner = -1;                     // v if this leaf lies in v's united box (§4.1.3)
+};
+
+struct OctreeStats {
+  std::int64_t splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0, splits_balance = 0;
+  std::int64_t duplicates = 0;
+  std::int64_t leaves = 0, outside_leaves = 0, vertex_boxes = 0;
+  // components() calls (the dominant cost): for children and parents at a
+  // split, for cached extended boxes, for uncached balance-adjacency queries.
+  std::int64_t components_split = 0, components_extended = 0, components_adjacency = 0;
+};
+
+// The faces of P ∧ ex(b) (§4.1.1 "Extended Box").
+struct ExtendedFaces3 {
+  std::vector<int> vertices, edges, facets;
+};
+
+class OctreeBuilder {
+ public:
+  explicit OctreeBuilder(const Domain3& domain);
+  void build();
+
+  const OctTree& tree() const { return tree_; }
+  const Domain3& domain() const { return domain_; }
+  const OctreeStats& stats() const { return stats_; }
+  const NodeData3& data(std::int32_t node) const { return data_[static_cast<std::size_t>(tree_.payload(node))]; }
+  Cube cube(std::int32_t node) const;
+  std::vector<std::int32_t> leaves_by_id() const;
+  // The united box of vertex v (2x2x2 block, §4.1.3); lo > hi if v was not centred.
+  const Cube& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }
+  // Thesis §4.1.1: balance-adjacency of neighbours big, small (h(big) >= h(small)).
+  bool balance_adjacent(std::int32_t big, std::int32_t small) const;
+  ExtendedFaces3 extended_faces(std::int32_t node) const;
+  // The phase whose split (or balancing) created the node (Root for the root).
+  OctPhase phase(std::int32_t node) const;
+
+ private:
+  static constexpr std::int32_t kInterior = 1;
+  NodeData3& own_data(std::int32_t node);
+  void init_root();
+  void assign_children(std::int32_t parent, std::int32_t first_child);
+  std::int32_t split_and_balance(std::int32_t node, OctPhase which);
+  void balance(std::span<const std::int32_t> seeds);
+  // Component of `ex` holding P ∧ node (ex a box containing the node's cube).
+  int component_in(std::int32_t node, const CubeComponents& ex) const;
+  CubeComponents extended_components(std::int32_t node, std::span<const Vec3> marks) const;
+  // Components of P ∩ ex(node), computed once per node (the node's cube never
+  // changes); the centre of the node is mark 0 when P ∧ node is the whole cube.
+  const CubeComponents& cached_extended(std::int32_t node) const;
+
+  bool vertex_crowded(std::int32_t node) const;
+  bool edge_crowded(std::int32_t node) const;
+  bool facet_crowded(std::int32_t node) const;
+  void run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const);
+  void center_vertices();
+  void protect_edge_boxes();
+  void record_phase(std::int32_t node);
+  bool facet_has_vertex(int facet, int v) const;
+
+  const Domain3& domain_;
+  OctTree tree_;
+  mutable OctreeStats stats_;  // mutable: const queries count their components() calls
+  std::vector<NodeData3> data_;
+  std::vector<Cube> vertex_box_;
+  std::vector<std::vector<int>> facet_vertices_;                   // sorted vertex ids of each facet (all loops)
+  mutable std::vector<std::unique_ptr<CubeComponents>> ex_cache_;  // per node id, see cached_extended
+  std::vector<OctPhase> phase_;                                    // per node id
+  OctPhase current_phase_ = OctPhase::Root;
+};
+
+}  // namespace pqmesh::mv3d
