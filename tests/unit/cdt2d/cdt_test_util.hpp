@@ -15,6 +15,7 @@
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
 #include "pqmesh/mesh.hpp"
 #include "predicates/predicates.hpp"
 
@@ -24,6 +25,15 @@ using Tris = std::vector<std::array<int, 3>>;
 
 // Uniform double in [0, 1) with 53 random bits (portable, unlike
 // std::uniform_real_distribution).
+// A validated domain's vertices with its loop sides as constraints (interior on the left).
+inline CdtInput loops_as_constraints(const Domain2& d) {
+  CdtInput in;
+  in.points = d.pslg.vertices;
+  for (const auto& loop : d.loops)
+    for (std::size_t k = 0; k < loop.size(); ++k) in.constraints.push_back({loop[k], loop[(k + 1) % loop.size()]});
+  return in;
+}
+
 inline double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
 
 inline std::vector<Vec2> random_points(std::uint64_t seed, int n) {

@@ -12,14 +12,6 @@
 namespace pqmesh::cdt2d::test {
 namespace {
 
-CdtInput loops_as_constraints(const Domain2& d) {
-  CdtInput in;
-  in.points = d.pslg.vertices;
-  for (const auto& loop : d.loops)
-    for (std::size_t k = 0; k < loop.size(); ++k) in.constraints.push_back({loop[k], loop[(k + 1) % loop.size()]});
-  return in;
-}
-
 double mesh_area(const TriMesh2& m) {
   double s = 0;
   for (const auto& t : m.triangles)

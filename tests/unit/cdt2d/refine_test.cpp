@@ -17,14 +17,6 @@
 namespace pqmesh::cdt2d::test {
 namespace {
 
-CdtInput loops_as_constraints(const Domain2& d) {
-  CdtInput in;
-  in.points = d.pslg.vertices;
-  for (const auto& loop : d.loops)
-    for (std::size_t k = 0; k < loop.size(); ++k) in.constraints.push_back({loop[k], loop[(k + 1) % loop.size()]});
-  return in;
-}
-
 TriMesh2 as_mesh(const RefineResult& r) {
   TriMesh2 m;
   m.vertices = r.points;
