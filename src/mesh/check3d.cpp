@@ -24,18 +24,19 @@
 //   subdivision of that triangle on the other side.
 //
 // Stage 4 (with the domain P, facets oriented outward):
-//   (a) every triangle of B is assigned to a facet f: exactly coplanar with f
-//       (orient3d = 0 against three non-collinear vertices of f), within f's
-//       bounding box, and, only when several coplanar facets qualify, with its
-//       three vertices in the closed facet polygon (exact crossing test in the
-//       projection that drops the dominant axis of f's normal). Its
-//       orientation must agree with f's (exact, in the same projection).
-//       Exactness means that a vertex constructed in double near a slanted
-//       facet, but not exactly in its plane, makes its triangles fail here.
+//   (a) every triangle of B is assigned to a facet f: its vertices lie in f's
+//       plane, exactly or as faithful roundings (f's plane meets the box of
+//       neighbouring doubles of the vertex, within_ulp_of_plane; ALGORITHM.md
+//       §5), within f's bounding box, and, only when several coplanar facets
+//       qualify, in the closed facet polygon (exact crossing test in the
+//       projection that drops the dominant axis of f's normal; a vertex
+//       within an ulp of a loop side is on it). Its orientation must agree
+//       with f's (exact, in the same projection). A vertex farther than an
+//       ulp from every facet plane makes its triangles fail here.
 //   (b) every input edge (DomainEdge) is walked from its first to its second
 //       vertex along edges of B, each step to the unique B-neighbour lying on
-//       the edge strictly closer to the end (collinear by three projected
-//       orient2d = 0, between by dot_sign < 0). Failure is MissingEdge.
+//       the edge, exactly or within an ulp (within_ulp_of_segment), strictly
+//       closer to the end (dot_sign < 0). Failure is MissingEdge.
 //   (c) for every facet f, the boundary of B_f (the triangles assigned to f)
 //       is computed combinatorially as signed counts of undirected mesh edges,
 //       and compared with the boundary of f: its loops, each side replaced by
@@ -58,6 +59,11 @@
 // every triangle oriented like f). Finally every input vertex is found by
 // exact coordinates, every input edge is a chain of mesh edges by (b), and
 // every facet is a union of boundary triangles by (c).
+// With rounded vertices, the argument holds for the mesh whose rounded
+// vertices are replaced by the exact points of P's facets and edges they
+// stand for; the stored mesh differs from it by under an ulp per coordinate
+// at those vertices (ALGORITHM.md §5). Such vertices are on dP by (a) and
+// are not passed to locate() (a rounding may lie an ulp outside P).
 //
 // Without a domain (check_mesh_topology) only stages 1-3 run. They are local:
 // a mesh that covers a region twice (winding number 2) can pass them.

@@ -46,7 +46,8 @@ void Checker3::walk_edges(const Domain3& d) {
     const Vec3 pa = m_.vertices[A], pb = m_.vertices[B];
     const ChainWalk walk = walk_chain(faces_.boundary_adjacency, A, B, [&](int c, int w) {
       const Vec3 p = m_.vertices[w];
-      return in_box(p, pa, pb) && collinear(pa, pb, p) && dot_sign(p, m_.vertices[c], pb) == Sign::Negative;
+      // On the edge exactly or within an ulp (ALGORITHM.md §5), and onward.
+      return within_ulp_of_segment(p, pa, pb) && dot_sign(p, m_.vertices[c], pb) == Sign::Negative;
     });
     const int c = walk.chain.back();
     const std::string edge_name = "input edge (" + std::to_string(de.a) + " " + std::to_string(de.b) + ")";
@@ -94,9 +95,16 @@ void Checker3::check_located(const Domain3& d) {
     sink_.note("vertex location skipped: the domain has no facet triangles (not built by make_domain?)");
     return;
   }
+  // Vertices of boundary triangles assigned to a facet are on the boundary
+  // by stage 4 (a rounded Steiner point may lie an ulp outside;
+  // on_facet_plane accepted it).
+  std::vector<char> on_facet(m_.vertices.size(), 0);
+  for (std::size_t i = 0; i < faces_.boundary.size() && i < assigned_.size(); ++i)
+    if (assigned_[i] >= 0)
+      for (const int v : faces_.boundary[i]) on_facet[static_cast<std::size_t>(v)] = 1;
   const DomainLocator3 locator(d);
   for (std::size_t v = 0; v < m_.vertices.size(); ++v)
-    if (locator.locate(m_.vertices[v]) == Location::Outside)
+    if (!on_facet[v] && locator.locate(m_.vertices[v]) == Location::Outside)
       sink_.add(CheckKind::VertexOutside, {static_cast<std::int64_t>(v)},
                 "vertex " + std::to_string(v) + " at " + format_point(m_.vertices[v]) + " is outside the domain");
 }

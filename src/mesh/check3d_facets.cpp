@@ -142,23 +142,21 @@ void Checker3::prepare_facets(const Domain3& d) {
   grid_hi_ = hi;
 }
 
-// Exact: p (already known to be in the facet's plane) lies in the closed
-// facet polygon. Crossing parity of a ray in +u direction, after an exact
-// on-boundary test.
+// Exact: p (already known to be in the facet's plane, or within an ulp of it)
+// lies in the closed facet polygon. A point within an ulp of a loop side is on
+// the loop (the rounding rule of ALGORITHM.md §5); otherwise the crossing
+// parity of a ray in the +u direction of the projection decides.
 bool Checker3::in_closed_facet(const Domain3& d, int f, Vec3 p) const {
   const FacetPlane& fp = planes_[f];
   const auto& pv = d.plc.vertices;
-  const int u = (fp.axis + 1) % 3, w = (fp.axis + 2) % 3;
+  const int w = (fp.axis + 2) % 3;
   bool inside = false;
   for (const auto& loop : d.plc.facets[f].loops) {
     const std::size_t n = loop.size();
     for (std::size_t k = 0; k < n; ++k) {
       const Vec3 a = pv[loop[k]], b = pv[loop[(k + 1) % n]];
+      if (within_ulp_of_segment(p, a, b)) return true;  // on the loop (ALGORITHM.md §5)
       const Sign o = orient2d_projected(a, b, p, fp.axis);
-      if (o == Sign::Zero && coord(p, u) >= std::min(coord(a, u), coord(b, u)) &&
-          coord(p, u) <= std::max(coord(a, u), coord(b, u)) && coord(p, w) >= std::min(coord(a, w), coord(b, w)) &&
-          coord(p, w) <= std::max(coord(a, w), coord(b, w)))
-        return true;  // on the loop
       const bool a_above = coord(a, w) > coord(p, w), b_above = coord(b, w) > coord(p, w);
       if (a_above != b_above && ((b_above && o == Sign::Positive) || (a_above && o == Sign::Negative)))
         inside = !inside;
@@ -175,8 +173,8 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
   for (std::size_t i = 0; i < nb; ++i) {
     const auto& t = faces_.boundary[i];
     const Vec3 a = m_.vertices[t[0]], b = m_.vertices[t[1]], c = m_.vertices[t[2]];
-    // Candidates: facets whose box holds the triangle and whose plane holds
-    // its vertices (exact). One candidate is taken as is; containment in
+    // Candidates: facets whose box and plane hold the triangle's vertices
+    // (exactly, or within an ulp: on_facet_plane). One candidate is taken as is; containment in
     // the facet is then enforced by (c), since a triangle assigned to f with
     // f's orientation but not inside f would leave B_f != f. Only between
     // several coplanar candidates does the exact point-in-polygon test
@@ -184,10 +182,7 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
     int first = -1, candidates = 0;
     for (int f : grid.at(a)) {
       const FacetPlane& fp = planes_[f];
-      if (!in_box(a, fp.lo, fp.hi) || !in_box(b, fp.lo, fp.hi) || !in_box(c, fp.lo, fp.hi)) continue;
-      if (orient3d(fp.p0, fp.p1, fp.p2, a) != Sign::Zero || orient3d(fp.p0, fp.p1, fp.p2, b) != Sign::Zero ||
-          orient3d(fp.p0, fp.p1, fp.p2, c) != Sign::Zero)
-        continue;
+      if (!on_facet_plane(fp, a) || !on_facet_plane(fp, b) || !on_facet_plane(fp, c)) continue;
       if (candidates++ == 0) first = f;
     }
     if (candidates == 1) {
@@ -196,10 +191,7 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
       for (int f : grid.at(a)) {
         if (f < first) continue;
         const FacetPlane& fp = planes_[f];
-        if (!in_box(a, fp.lo, fp.hi) || !in_box(b, fp.lo, fp.hi) || !in_box(c, fp.lo, fp.hi)) continue;
-        if (orient3d(fp.p0, fp.p1, fp.p2, a) != Sign::Zero || orient3d(fp.p0, fp.p1, fp.p2, b) != Sign::Zero ||
-            orient3d(fp.p0, fp.p1, fp.p2, c) != Sign::Zero)
-          continue;
+        if (!on_facet_plane(fp, a) || !on_facet_plane(fp, b) || !on_facet_plane(fp, c)) continue;
         if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c)) continue;
         assigned_[i] = f;
         break;
@@ -210,7 +202,7 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
       sink_.add(CheckKind::BoundaryFace, {t[0], t[1], t[2]},
                 "boundary triangle (" + format_ids(t) + ") of tetrahedron " + std::to_string(tet) + " at " +
                     format_point(a) + " " + format_point(b) + " " + format_point(c) +
-                    " is not contained in any domain facet (an exact test: a vertex only approximately in a"
+                    " is not contained in any domain facet (an exact test: a vertex farther than an ulp from a"
                     " facet's plane fails it)");
       continue;
     }

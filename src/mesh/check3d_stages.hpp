@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "mesh/check_common.hpp"
@@ -67,6 +68,18 @@ struct FacetPlane {
   Sign turn = Sign::Zero;  // orientation of the outer loop in that projection
   Vec3 lo, hi;      // bounding box
 };
+
+// p lies in the facet's plane, or is a faithful rounding of a point of it
+// (within_ulp_of_plane, docs/ALGORITHM.md §5), and in its bounding box
+// widened by an ulp. Exact; exact points pass the first plane test.
+inline bool on_facet_plane(const FacetPlane& fp, Vec3 p) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Vec3 lo{std::nextafter(p.x, -inf), std::nextafter(p.y, -inf), std::nextafter(p.z, -inf)};
+  const Vec3 hi{std::nextafter(p.x, inf), std::nextafter(p.y, inf), std::nextafter(p.z, inf)};
+  if (hi.x < fp.lo.x || lo.x > fp.hi.x || hi.y < fp.lo.y || lo.y > fp.hi.y || hi.z < fp.lo.z || lo.z > fp.hi.z)
+    return false;
+  return orient3d(fp.p0, fp.p1, fp.p2, p) == Sign::Zero || within_ulp_of_plane(p, fp.p0, fp.p1, fp.p2);
+}
 
 class Checker3 {
  public:

@@ -83,4 +83,57 @@ inline bool within_ulp_of_segment(Vec2 p, Vec2 a, Vec2 b) {
   return pos < 4 && neg < 4;
 }
 
+// The 3D forms of the same rule, for Steiner points on slanted input edges and
+// facets (docs/ALGORITHM.md §5). The ulp box of p is
+// [pred(p.x), succ(p.x)] x [pred(p.y), succ(p.y)] x [pred(p.z), succ(p.z)].
+//
+// within_ulp_of_segment(p, a, b): the closed segment ab meets p's ulp box.
+// Exact separating-axis test: the three box axes (interval overlap) and the
+// three products e_i x (b - a); along e_i x (b - a) the segment projects to
+// one point and a corner c to the sign of orient2d_projected(a, b, c, i), so
+// the axis separates iff the four distinct projected corners lie strictly on
+// one side of the projected line.
+inline bool within_ulp_of_segment(Vec3 p, Vec3 a, Vec3 b) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double pc[3] = {p.x, p.y, p.z}, ac[3] = {a.x, a.y, a.z}, bc[3] = {b.x, b.y, b.z};
+  double lo[3], hi[3];
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = std::nextafter(pc[i], -inf);
+    hi[i] = std::nextafter(pc[i], inf);
+    if (hi[i] < std::min(ac[i], bc[i]) || lo[i] > std::max(ac[i], bc[i])) return false;
+  }
+  for (int drop = 0; drop < 3; ++drop) {
+    const int u = (drop + 1) % 3, w = (drop + 2) % 3;
+    int pos = 0, neg = 0;
+    for (int corner = 0; corner < 4; ++corner) {
+      // The corners of the box's projection along `drop` (the dropped
+      // coordinate does not enter orient2d_projected).
+      double c[3] = {lo[0], lo[1], lo[2]};
+      c[u] = (corner & 1) ? hi[u] : lo[u];
+      c[w] = (corner & 2) ? hi[w] : lo[w];
+      const Sign s = orient2d_projected(a, b, {c[0], c[1], c[2]}, drop);
+      pos += s == Sign::Positive;
+      neg += s == Sign::Negative;
+    }
+    if (pos == 4 || neg == 4) return false;
+  }
+  return true;
+}
+
+// within_ulp_of_plane(p, a, b, c): the plane through a, b, c (not collinear)
+// meets p's ulp box: orient3d is not of one strict sign on its eight corners.
+inline bool within_ulp_of_plane(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double xs[2] = {std::nextafter(p.x, -inf), std::nextafter(p.x, inf)};
+  const double ys[2] = {std::nextafter(p.y, -inf), std::nextafter(p.y, inf)};
+  const double zs[2] = {std::nextafter(p.z, -inf), std::nextafter(p.z, inf)};
+  int pos = 0, neg = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Sign s = orient3d(a, b, c, {xs[corner & 1], ys[(corner >> 1) & 1], zs[(corner >> 2) & 1]});
+    pos += s == Sign::Positive;
+    neg += s == Sign::Negative;
+  }
+  return pos < 8 && neg < 8;
+}
+
 }  // namespace pqmesh

@@ -9,6 +9,8 @@
 
 #include "check_fixtures.hpp"
 #include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "predicates/predicates.hpp"
 
 namespace pqmesh {
 namespace {
@@ -375,6 +377,54 @@ TEST(Check3d, StructuredCubePerformance) {
               seconds);
   EXPECT_TRUE(r.valid()) << r.to_text();
   EXPECT_EQ(r.boundary_faces, 6 * n * n * 2);
+}
+
+// The corner tetrahedron O A B C (O the origin, A, B, C the unit points) with
+// slanted facet x + y + z = 1, from make_domain.
+Domain3 corner_tetrahedron() {
+  Plc3 plc;
+  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (std::vector<int> loop : {std::vector<int>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+    Facet3 f;
+    f.loops = {loop};
+    plc.facets.push_back(f);
+  }
+  return make_domain(plc);
+}
+
+// The corner tetrahedron with one Steiner point p on facet ABC (three
+// tetrahedra O + each sub-triangle), or, on_edge, p on edge AB (tetrahedra
+// O A p C and O p B C).
+TetMesh3 corner_split(Vec3 p, bool on_edge) {
+  TetMesh3 m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, p};
+  if (on_edge)
+    m.tetrahedra = {positive(m.vertices, {0, 1, 4, 3}), positive(m.vertices, {0, 4, 2, 3})};
+  else
+    m.tetrahedra = {positive(m.vertices, {0, 1, 2, 4}), positive(m.vertices, {0, 2, 3, 4}),
+                    positive(m.vertices, {0, 3, 1, 4})};
+  return m;
+}
+
+// Rounded Steiner points (ALGORITHM.md §5): 1/3 and 2/3 have no double; their
+// roundings lie an ulp off the slanted facet and edge (3 fl(1/3) != 1) and are
+// accepted, while a point 1e-9 off is not.
+TEST(Check3d, RoundedSteinerPointsOnSlantedFacetAndEdge) {
+  const Domain3 d = corner_tetrahedron();
+  const double third = 1.0 / 3.0, two_thirds = 2.0 / 3.0;
+  // The roundings are off the facet plane and the edge exactly (else the
+  // test would not exercise the rule).
+  ASSERT_NE(orient3d({1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {third, third, third}), Sign::Zero);
+  ASSERT_NE(orient2d({1, 0}, {0, 1}, {third, two_thirds}), Sign::Zero);
+  const TetMesh3 on_facet = corner_split({third, third, third}, false);
+  EXPECT_TRUE(check_mesh(on_facet, d).valid()) << check_mesh(on_facet, d).to_text();
+  const TetMesh3 on_edge = corner_split({third, two_thirds, 0}, true);
+  EXPECT_TRUE(check_mesh(on_edge, d).valid()) << check_mesh(on_edge, d).to_text();
+
+  const TetMesh3 off_facet = corner_split({third + 1e-9, third, third}, false);
+  EXPECT_FALSE(check_mesh(off_facet, d).valid());
+  const TetMesh3 off_edge = corner_split({third + 1e-9, two_thirds, 0}, true);
+  EXPECT_FALSE(check_mesh(off_edge, d).valid());
 }
 
 }  // namespace
