@@ -1,0 +1,207 @@
+#!/usr/bin/env bash
+# The 3D peer benchmark (issue 5 item 9): tetrahedral meshers side by side in
+# one session on the same inputs — Debian's tetgen (-pq1.414), gmsh -3 with its
+# default algorithm and with HXT on two threads, and pqmesh once `pqmesh mesh`
+# meshes 3D input (until then its rows say so). Not a test: it measures,
+# prints a table and never fails because a tool is missing.
+#
+#   bench/run_3d.sh [--target N] [--large-target N] [--no-large] [--repeat R]
+#                   [--tsv FILE] [--keep] [INPUT.poly ...]
+#
+#   --target N        corpus: aim every tool at about N tetrahedra (default:
+#                     each tool at its own default size; gmsh's point size is
+#                     then a tenth of the model's largest extent)
+#   --large-target N  large case (data/3d/plate_holes.poly): about N
+#                     tetrahedra (default 1000000)
+#   --no-large        skip the large case
+#   --repeat R        time each run R times, report the fastest (default 1)
+#   --tsv FILE        also write the table as tab-separated values
+#   --keep            keep the work directory (meshes, logs, .geo files)
+#   INPUT.poly ...    TetGen .poly inputs instead of data/3d/*.poly
+#
+# Sizes: each tool is calibrated by one trial run and the power law
+# count ~ (max volume)^-1 for tetgen -a, count ~ (point size)^-3 for gmsh;
+# one calibration step for tetgen, two for gmsh; counts land within about 30%
+# of the target.
+#
+# Columns: wall s and peak MiB from /usr/bin/time -f '%e %M' over the whole
+# process (read, mesh, write: tetgen its ASCII .node/.ele/.face, gmsh binary
+# .msh 4.1, pqmesh binary .vtu after its own check); tet/s = tetrahedra / wall
+# s; B/tet = peak bytes / tetrahedra; min and max dihedral (degrees) and the
+# worst aspect ratio from `pqmesh quality` on each tool's output (gmsh's
+# binary file converted to ASCII first, outside the timing); valid = `pqmesh
+# check` of the output against the input domain: the exact checker, which
+# accepts a boundary vertex off a slanted facet only when it is a faithful
+# rounding (within an ulp, docs/ALGORITHM.md §5). gmsh's vertices inside
+# facets are often a few ulps off the facet plane; those meshes show NO.
+#
+# Environment: PQMESH_BIN (default build/bin/pqmesh, relative to the repo root).
+set -uo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+peers=$root/bench/peers3d
+pqmesh=${PQMESH_BIN:-build/bin/pqmesh}
+[[ $pqmesh == /* ]] || pqmesh=$root/$pqmesh
+
+target="" large_target=1000000 large=1 repeat=1 tsv="" keep=0 inputs=()
+while (($#)); do
+  case $1 in
+    --target) target=$2; shift 2 ;;
+    --large-target) large_target=$2; shift 2 ;;
+    --no-large) large=0; shift ;;
+    --repeat) repeat=$2; shift 2 ;;
+    --tsv) tsv=$2; shift 2 ;;
+    --keep) keep=1; shift ;;
+    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "run_3d.sh: unknown option $1" >&2; exit 2 ;;
+    *) [[ -f $1 ]] || { echo "run_3d.sh: no such input $1" >&2; exit 2; }
+       inputs+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
+  esac
+done
+((${#inputs[@]})) || inputs=("$root"/data/3d/*.poly)
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/pqmesh_bench3d.XXXXXX")
+if ((keep)); then echo "work directory: $work"; else trap 'rm -rf "$work"' EXIT; fi
+
+have_time=0; [[ -x /usr/bin/time ]] && have_time=1
+have_pqmesh=0; [[ -x $pqmesh ]] && have_pqmesh=1
+have_tetgen=0; command -v tetgen >/dev/null && have_tetgen=1
+have_gmsh=0; command -v gmsh >/dev/null && have_gmsh=1
+((have_pqmesh)) || echo "note: $pqmesh not found; quality, check and pqmesh columns need it (cmake --build build)" >&2
+
+# timed LOG CMD...: runs CMD $repeat times; sets rc, wall (fastest run), kib
+# (peak RSS of that run, "n/a" without GNU time).
+timed() {
+  local log=$1; shift
+  local r w k best="" bestk="n/a"
+  rc=0
+  for ((r = 0; r < repeat; r++)); do
+    if ((have_time)); then
+      /usr/bin/time -f '%e %M' -o "$work/time.txt" "$@" >"$log" 2>&1 || rc=$?
+      read -r w k <"$work/time.txt"
+    else
+      local t0 t1
+      t0=$(date +%s.%N); "$@" >"$log" 2>&1 || rc=$?; t1=$(date +%s.%N)
+      w=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }'); k="n/a"
+    fi
+    ((rc == 0)) || return "$rc"
+    if [[ -z $best ]] || awk -v a="$w" -v b="$best" 'BEGIN { exit !(a < b) }'; then best=$w bestk=$k; fi
+  done
+  wall=$best kib=$bestk
+}
+
+# quality FILE: sets tets, dmin, dmax, aspect from `pqmesh quality`.
+quality() {
+  tets=n/a dmin=n/a dmax=n/a aspect=n/a
+  ((have_pqmesh)) || return 0
+  "$pqmesh" quality "$1" >"$work/q.txt" 2>&1 || return 0
+  tets=$(awk '/^quality of/ { print $3; exit }' "$work/q.txt")
+  dmin=$(awk '/^min dihedral/ { print $4; exit }' "$work/q.txt")
+  dmax=$(awk '/^max dihedral/ { print $6; exit }' "$work/q.txt")
+  aspect=$(awk '/^aspect ratio/ { print $5; exit }' "$work/q.txt")
+}
+
+# validity MESH DOMAIN: "yes", "NO" or "n/a".
+validity() {
+  ((have_pqmesh)) || { echo n/a; return; }
+  if "$pqmesh" check "$1" --domain "$2" >"$work/check.txt" 2>&1; then echo yes; else echo NO; fi
+}
+
+rows=()
+row() {  # tool input tets wall kib dmin dmax aspect valid
+  local tps=n/a bpt=n/a mib=n/a
+  if [[ $3 =~ ^[0-9]+$ && $3 -gt 0 ]]; then
+    awk -v w="$4" 'BEGIN { exit !(w > 0) }' && tps=$(awk -v n="$3" -v w="$4" 'BEGIN { printf "%.0f", n / w }')
+    [[ $5 =~ ^[0-9]+$ ]] && bpt=$(awk -v n="$3" -v k="$5" 'BEGIN { printf "%.0f", k * 1024 / n }')
+  fi
+  [[ $5 =~ ^[0-9]+$ ]] && mib=$(awk -v k="$5" 'BEGIN { printf "%.1f", k / 1024 }')
+  rows+=("$1	$2	$3	$4	$mib	$tps	$bpt	$6	$7	$8	$9")
+}
+
+extent() {  # largest bounding-box extent of a .poly's nodes
+  awk 'BEGIN { n = -1 } { sub(/#.*/, "") } NF == 0 { next }
+       n < 0 { n = $1; next }
+       i < n { for (a = 2; a <= 4; a++) { if (i == 0 || $a < lo[a]) lo[a] = $a; if (i == 0 || $a > hi[a]) hi[a] = $a }; i++ }
+       END { e = 0; for (a = 2; a <= 4; a++) if (hi[a] - lo[a] > e) e = hi[a] - lo[a]; print e }' "$1"
+}
+
+run_tetgen() {  # name input target
+  local name=$1 in=$2 want=$3 dir=$work/tetgen_$1 area=""
+  mkdir -p "$dir"; cp "$in" "$dir/m.poly"
+  if [[ -n $want ]]; then  # calibrate -a from a trial at the default size
+    (cd "$dir" && tetgen -pq1.414Q m.poly >/dev/null 2>&1)
+    local n0 vol
+    n0=$(awk 'NR == 1 { print $1 }' "$dir/m.1.ele" 2>/dev/null)
+    vol=$("$pqmesh" quality "$dir/m.1.ele" 2>/dev/null | awk '/^total volume/ { print $3 }')
+    [[ -n $n0 && -n $vol ]] && area=$(awk -v v="$vol" -v n="$want" 'BEGIN { printf "%.6g", 2 * v / n }')
+    rm -f "$dir"/m.1.*
+  fi
+  if ! timed "$dir/log" bash -c "cd '$dir' && tetgen -pq1.414Q${area:+a$area} m.poly"; then
+    row tetgen "$name" failed n/a n/a n/a n/a n/a n/a; return
+  fi
+  quality "$dir/m.1.ele"
+  row tetgen "$name" "$tets" "$wall" "$kib" "$dmin" "$dmax" "$aspect" "$(validity "$dir/m.1.ele" "$in")"
+}
+
+run_gmsh() {  # name input target label extra-args...
+  local name=$1 in=$2 want=$3 label=$4; shift 4
+  local dir=$work/${label}_$name lc
+  mkdir -p "$dir"
+  lc=$(awk -v e="$(extent "$in")" 'BEGIN { printf "%.6g", e / 10 }')
+  python3 "$peers/poly3d.py" geo "$in" "$dir/m.geo" "$lc" || { row "$label" "$name" failed n/a n/a n/a n/a n/a n/a; return; }
+  if [[ -n $want ]]; then  # calibrate the point size: two steps (boundary-dominated trials undershoot)
+    local step
+    for step in 1 2; do
+      gmsh -3 "$dir/m.geo" -o "$dir/trial.msh" -format msh41 "$@" >/dev/null 2>&1
+      quality "$dir/trial.msh"
+      [[ $tets =~ ^[0-9]+$ ]] && lc=$(awk -v l="$lc" -v n="$tets" -v w="$want" 'BEGIN { printf "%.6g", l * (n / w) ^ (1 / 3) }')
+      python3 "$peers/poly3d.py" geo "$in" "$dir/m.geo" "$lc"
+    done
+  fi
+  if ! timed "$dir/log" gmsh -3 "$dir/m.geo" -o "$dir/m.msh" -format msh41 -bin "$@"; then
+    row "$label" "$name" failed n/a n/a n/a n/a n/a n/a; return
+  fi
+  gmsh "$dir/m.msh" -0 -o "$dir/ascii.msh" -format msh41 >/dev/null 2>&1
+  quality "$dir/ascii.msh"
+  row "$label" "$name" "$tets" "$wall" "$kib" "$dmin" "$dmax" "$aspect" "$(validity "$dir/ascii.msh" "$in")"
+}
+
+run_pqmesh() {  # name input target
+  local name=$1 in=$2 want=$3 dir=$work/pqmesh_$1
+  mkdir -p "$dir"
+  ((have_pqmesh)) || { row pqmesh "$name" missing n/a n/a n/a n/a n/a n/a; return; }
+  "$pqmesh" mesh "$in" -o "$dir/probe.vtu" --quiet >/dev/null 2>&1
+  if [[ $? -eq 2 ]]; then row pqmesh "$name" "n/a (3D mesh: issue 5)" n/a n/a n/a n/a n/a n/a; return; fi
+  local opts=()
+  [[ -n $want ]] && opts=(--max-size "$(awk -v e="$(extent "$in")" -v n="$want" 'BEGIN { printf "%.6g", e / (n / 6) ^ (1 / 3) }')")
+  if ! timed "$dir/log" "$pqmesh" mesh "$in" -o "$dir/m.vtu" --quiet "${opts[@]}"; then
+    row pqmesh "$name" failed n/a n/a n/a n/a n/a n/a; return
+  fi
+  quality "$dir/m.vtu"
+  row pqmesh "$name" "$tets" "$wall" "$kib" "$dmin" "$dmax" "$aspect" yes  # pqmesh checks before writing
+}
+
+run_all() {  # name input target
+  run_pqmesh "$@"
+  if ((have_tetgen)); then run_tetgen "$@"; else row tetgen "$1" missing n/a n/a n/a n/a n/a n/a; fi
+  if ((have_gmsh)); then
+    run_gmsh "$1" "$2" "$3" gmsh-default
+    run_gmsh "$1" "$2" "$3" gmsh-hxt -algo hxt -nt 2
+  else
+    row gmsh "$1" missing n/a n/a n/a n/a n/a n/a
+  fi
+}
+
+for in in "${inputs[@]}"; do
+  run_all "$(basename "$in" .poly)" "$in" "$target"
+done
+((large)) && run_all "plate_holes@${large_target}" "$root/data/3d/plate_holes.poly" "$large_target"
+
+header="tool	input	tets	wall s	peak MiB	tet/s	B/tet	min dih	max dih	max aspect	valid"
+{
+  echo "$header"
+  printf '%s\n' "${rows[@]}"
+} | column -t -s $'\t'
+if [[ -n $tsv ]]; then
+  { echo "$header"; printf '%s\n' "${rows[@]}"; } >"$tsv"
+fi
