@@ -1,0 +1,110 @@
+#include "tet3d/box_faces.hpp"
+
+#include <algorithm>
+
+#include "pqmesh/errors.hpp"
+
+namespace pqmesh::tet3d {
+
+namespace {
+
+std::vector<std::int32_t> leaves_meeting_p(const mv3d::OctreeBuilder& builder) {
+  std::vector<std::int32_t> out;
+  for (const std::int32_t n : builder.leaves_by_id())
+    if (builder.data(n).has_component) out.push_back(n);
+  return out;
+}
+
+}  // namespace
+
+CornerSet::CornerSet(const mv3d::OctreeBuilder& builder) : CornerSet(builder.tree(), leaves_meeting_p(builder)) {}
+
+CornerSet::CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves) {
+  for (const std::int32_t n : leaves) {
+    const BoxKey<3>& key = tree.key(n);
+    if (!key.aligned()) throw InternalError("tet3d: merged (unaligned) leaf " + std::to_string(n));
+    for (int k = 0; k < 8; ++k) {
+      const auto [it, fresh] = set_.try_emplace(key_corner(key, k), key.level);
+      if (!fresh) it->second = std::max(it->second, key.level);
+    }
+  }
+}
+
+namespace {
+
+// Appends the split points strictly between a and b (an axis-parallel segment
+// of `length` fine units), in order from a to b.
+void split_edge(const GridPoint& a, const GridPoint& b, int axis, std::int64_t length, const CornerSet& corners,
+                std::vector<GridPoint>& out) {
+  if (length < 2) return;
+  GridPoint m = a;
+  m.f[axis] += (b.f[axis] > a.f[axis] ? 1 : -1) * (length / 2);
+  if (!corners.contains(m)) return;
+  split_edge(a, m, axis, length / 2, corners, out);
+  out.push_back(m);
+  split_edge(m, b, axis, length / 2, corners, out);
+}
+
+void collect_squares(FaceSquare s, const CornerSet& corners, std::vector<FaceSquare>& out) {
+  if (s.side >= 4 && corners.contains(s.centre())) {
+    const std::int64_t half = s.side / 2;
+    for (int k = 0; k < 4; ++k) {
+      FaceSquare sub = s;
+      sub.side = half;
+      sub.lo.f[s.u] += (k & 1) ? half : 0;
+      sub.lo.f[s.v] += (k & 2) ? half : 0;
+      collect_squares(sub, corners, out);
+    }
+    return;
+  }
+  out.push_back(s);
+}
+
+}  // namespace
+
+void face_squares(const BoxKey<3>& key, int axis, bool upper, const CornerSet& corners, std::vector<FaceSquare>& out) {
+  if (!key.aligned()) throw InternalError("tet3d: face_squares on a merged (unaligned) key");
+  if (axis < 0 || axis > 2) throw InternalError("tet3d: bad face axis");
+  FaceSquare s;
+  s.n = axis;
+  s.u = (axis + 1) % 3;
+  s.v = (axis + 2) % 3;
+  s.upper = upper;
+  s.lo = key_corner(key, 0);
+  if (upper) s.lo.f[axis] += key.fine_side();
+  s.side = key.fine_side();
+  collect_squares(s, corners, out);
+}
+
+std::vector<GridPoint> square_ring(const FaceSquare& s, const CornerSet& corners) {
+  // Corners counter-clockwise seen from +n: (0,0), (1,0), (1,1), (0,1) in (u, v).
+  std::array<GridPoint, 4> c{s.lo, s.lo, s.lo, s.lo};
+  c[1].f[s.u] += s.side;
+  c[2].f[s.u] += s.side;
+  c[2].f[s.v] += s.side;
+  c[3].f[s.v] += s.side;
+  std::vector<GridPoint> ring;
+  for (int i = 0; i < 4; ++i) {
+    ring.push_back(c[i]);
+    split_edge(c[i], c[(i + 1) % 4], (i % 2 == 0) ? s.u : s.v, s.side, corners, ring);
+  }
+  return ring;
+}
+
+void triangulate_box_face(const BoxKey<3>& key, int axis, bool upper, const CornerSet& corners,
+                          std::vector<GridTriangle>& out) {
+  std::vector<FaceSquare> squares;
+  face_squares(key, axis, upper, corners, squares);
+  for (const FaceSquare& sq : squares) {
+    const GridPoint centre = sq.centre();
+    const std::vector<GridPoint> ring = square_ring(sq, corners);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const GridPoint& p = ring[i];
+      const GridPoint& q = ring[(i + 1) % ring.size()];
+      // (centre, p, q) has normal +n; the lower face's outward normal is -n.
+      out.push_back(sq.upper ? GridTriangle{centre, p, q} : GridTriangle{centre, q, p});
+    }
+  }
+}
+
+}  // namespace pqmesh::tet3d

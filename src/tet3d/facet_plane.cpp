@@ -1,0 +1,98 @@
+#include "tet3d/facet_plane.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "pqmesh/errors.hpp"
+
+namespace pqmesh::tet3d {
+
+namespace {
+double& at(Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
+double at(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
+}  // namespace
+
+FacetPlane::FacetPlane(const Domain3& domain, int facet) : facet_(facet) {
+  for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
+    if (domain.facet_triangle_owner[t] != facet) continue;
+    const auto& tri = domain.facet_triangles[t];
+    a_ = domain.plc.vertices[static_cast<std::size_t>(tri[0])];
+    b_ = domain.plc.vertices[static_cast<std::size_t>(tri[1])];
+    c_ = domain.plc.vertices[static_cast<std::size_t>(tri[2])];
+    const Vec3 n = cross(b_ - a_, c_ - a_);
+    n_ = (1.0 / norm(n)) * n;
+    return;
+  }
+  throw InternalError("tet3d: facet " + std::to_string(facet) + " has no triangle");
+}
+
+Vec3 FacetPlane::settle(Vec3 p, int axis) const {
+  // Along the line through p parallel to `axis` the plane is crossed at one
+  // point (the normal's component on the axis is nonzero; else throw). Find
+  // two doubles on either side of it by steps doubling from one ulp, then
+  // bisect down to adjacent doubles: the plane then meets the ulp box of both,
+  // within_ulp_of_plane holds. Every comparison is an exact orient3d.
+  if (within_ulp_of_plane(p, a_, b_, c_)) return p;
+  const double inf = std::numeric_limits<double>::infinity();
+  const Sign s0 = side(p);
+  const double na = at(n_, axis);
+  if (na == 0) throw InternalError("tet3d: cannot settle along an axis parallel to facet " + std::to_string(facet_));
+  const double dir = ((s0 == Sign::Positive) == (na < 0)) ? 1.0 : -1.0;
+  const double x0 = at(p, axis);
+  double near = x0, step = std::fabs(std::nextafter(x0, dir * inf) - x0);
+  Vec3 q = p;
+  for (int k = 0; k < 2100; ++k, step *= 2) {
+    const double far = x0 + dir * step;
+    at(q, axis) = far;
+    const Sign s = side(q);
+    if (s == Sign::Zero) return q;
+    if (s != s0) {
+      // Bisect [near, far] (in the order of the doubles).
+      double lo = near, hi = far;
+      for (int it = 0; it < 200; ++it) {
+        const double mid = lo + (hi - lo) / 2;
+        if (mid == lo || mid == hi) break;
+        at(q, axis) = mid;
+        const Sign sm = side(q);
+        if (sm == Sign::Zero) return q;
+        (sm == s0 ? lo : hi) = mid;
+      }
+      at(q, axis) = lo;
+      if (within_ulp_of_plane(q, a_, b_, c_)) return q;
+      at(q, axis) = hi;
+      if (within_ulp_of_plane(q, a_, b_, c_)) return q;
+      break;
+    }
+    near = far;
+  }
+  throw InternalError("tet3d: point does not settle on the plane of facet " + std::to_string(facet_));
+}
+
+Vec3 FacetPlane::crossing(Vec3 p, Vec3 q) const {
+  // Parameter of the crossing from the signed distances (constructions).
+  const double dp = distance(p), dq = distance(q);
+  const double t = dp / (dp - dq);
+  Vec3 x = p;
+  int free_axis = 0;
+  double best = -1;
+  for (int a = 0; a < 3; ++a) {
+    const double pa = at(p, a), qa = at(q, a);
+    if (pa == qa) continue;  // kept exactly: the point stays on the segment's fixed planes
+    at(x, a) = pa + t * (qa - pa);
+    const double w = std::fabs(qa - pa);
+    if (w > best) {
+      best = w;
+      free_axis = a;
+    }
+  }
+  x = settle(x, free_axis);
+  const double lo = std::fmin(at(p, free_axis), at(q, free_axis));
+  const double hi = std::fmax(at(p, free_axis), at(q, free_axis));
+  if (!(at(x, free_axis) > lo && at(x, free_axis) < hi))
+    throw InternalError("tet3d: crossing of facet " + std::to_string(facet_) +
+                        " within an ulp of a segment end (a box vertex this close must be warped, §4.3)");
+  return x;
+}
+
+}  // namespace pqmesh::tet3d

@@ -1,0 +1,63 @@
+#pragma once
+// Identities of mesh vertices on box faces crossed by a P facet (thesis §4.4
+// Case C), by defining features (issue 5 item 3; docs/ALGORITHM.md §12.2):
+//
+//   Grid             a grid point (box corner, split point, square centre): p
+//   FacetCrossing    facet F crossing the box-edge segment [p, q] between two
+//                    consecutive points of a square ring (p < q)
+//   ChordMidpoint    midpoint of the chord F ∩ S of square S (centre p), Case C1
+//   ChordProjection  the chord F ∩ S met by the segment from S's centre to the
+//                    ring point q (Case C2 with the centre beyond F), S centre p
+//   BoxOnFacet       the central vertex of a facet box moved onto F (§4.5.4), box centre p
+//   FacetCentre      the central point of F ∩ b (§4.5.4 first case), box centre p
+//   Warped           the box vertex (grid point p) moved h/16 away from facet F (§4.3 second pass)
+//   BoxClip          segment from the box centre p (beyond F) to the grid point q
+//                    clipped at F (§4.5.4 third case, prism tops)
+//
+// Every key names the same point from both boxes sharing the square, so the
+// two sides build identical vertices.
+#include <cstdint>
+#include <functional>
+
+#include "tet3d/grid_point.hpp"
+
+namespace pqmesh::tet3d {
+
+enum class VertexKind : std::uint8_t {
+  Grid,
+  FacetCrossing,
+  ChordMidpoint,
+  ChordProjection,
+  BoxOnFacet,
+  FacetCentre,
+  BoxClip,
+  Warped
+};
+
+struct VertexKey {
+  VertexKind kind = VertexKind::Grid;
+  GridPoint p, q;
+  int facet = -1;
+  friend bool operator==(const VertexKey&, const VertexKey&) = default;
+  friend auto operator<=>(const VertexKey&, const VertexKey&) = default;
+};
+
+inline VertexKey grid_key(const GridPoint& p) { return {VertexKind::Grid, p, {}, -1}; }
+
+// Kinds constructed on their facet's plane (rounded onto it, facet_plane.hpp).
+inline bool on_its_facet(const VertexKey& k) {
+  return k.kind == VertexKind::FacetCrossing || k.kind == VertexKind::ChordMidpoint ||
+         k.kind == VertexKind::ChordProjection || k.kind == VertexKind::BoxOnFacet ||
+         k.kind == VertexKind::FacetCentre || k.kind == VertexKind::BoxClip;
+}
+
+struct VertexKeyHash {
+  std::size_t operator()(const VertexKey& k) const {
+    const GridPointHash h;
+    std::size_t x = h(k.p) * 31 + h(k.q);
+    x = x * 1000003u + static_cast<std::size_t>(k.facet + 1) * 8u + static_cast<std::size_t>(k.kind);
+    return x;
+  }
+};
+
+}  // namespace pqmesh::tet3d
