@@ -557,6 +557,46 @@ def gen_3d():
                       attributes=[(F(i % 4),) for i in range(len(v))])
     good("3d/fins.poly", "heat sink: 8 fins, 7 narrow gaps (many reflex edges); vertex attribute column; volume 39/64")
 
+    # Geodesic refinement models (issue 4 item 4; tests/unit/mv3d/octree_geodesic_test.cpp builds
+    # the same solids for w = 1e-1 and 1e-3, rounded to multiples of 2^-12, and must produce
+    # identical coordinates for w = 1e-1). Here w = round(0.1 * 4096) / 4096 = 410/4096.
+    w = F(410, 4096)
+    # tuning_fork.poly: the plate [0,1]^2 x [0,1/4] minus the square cavity [1/4,3/4]^2 and the neck
+    # [1/2 - w/2, 1/2 + w/2] x [3/4, 1] that opens it to the outside; the prongs either side of the
+    # neck are w apart in space, about 1 apart inside P. Area 1 - 1/4 - w/4; volume area / 4.
+    a, b, q, t = F(1, 2) - w / 2, F(1, 2) + w / 2, F(1, 4), F(3, 4)
+    U = [(F(0), F(0)), (F(1), F(0)), (F(1), F(1)), (b, F(1)), (b, t), (t, t), (t, q), (q, q), (q, t), (a, t),
+         (a, F(1)), (F(0), F(1))]
+    area = F(3, 4) - w / 4
+    assert signed_area(U) == area
+    v, f = prism(U, F(0), q)
+    assert check_good_solid(v, f, area / 4) == 36
+    write_tetgen_poly("3d/tuning_fork.poly",
+                      "tuning fork (geodesic test): a plate with a square cavity opened by a neck of width 410/4096",
+                      v, f)
+    good("3d/tuning_fork.poly", "plate with a cavity opened to the outside by a neck of width 410/4096: close in space, "
+         "far inside P (geodesic refinement); volume " + str(area / 4))
+
+    # heat_sink.poly: base [0,1] x [0,1/8] with 8 fins, fin i centred at x = (i + 1/2)/8, stem
+    # 102/4096 wide up to y = 1/2, so the air gaps between stems are 1/8 - 102/4096 = w wide (the
+    # narrow-w model of the test adds flanges at y in [7/16, 1/2] that close the gaps' mouths).
+    # Extruded by 1/8 in z. Area 1/8 + 8 (102/4096)(3/8); volume area / 8. 36-gon caps.
+    hs, pitch, base, top = F(51, 4096), F(1, 8), F(1, 8), F(1, 2)
+    assert pitch - 2 * hs == w
+    H = [(F(0), F(0)), (F(1), F(0)), (F(1), base)]
+    for i in reversed(range(8)):
+        c = (i + F(1, 2)) * pitch
+        H += [(c + hs, base), (c + hs, top), (c - hs, top), (c - hs, base)]
+    H.append((F(0), base))
+    area = F(1, 8) + 8 * (2 * hs) * F(3, 8)
+    assert len(H) == 36 and signed_area(H) == area
+    v, f = prism(H, F(0), F(1, 8))
+    assert check_good_solid(v, f, area / 8) == 108
+    write_tetgen_poly("3d/heat_sink.poly",
+                      "heat sink (geodesic test): a base with 8 fins 102/4096 wide, air gaps of width 410/4096", v, f)
+    good("3d/heat_sink.poly", "heat sink: 8 thin fins separated by air gaps of width 410/4096 (geodesic "
+         "refinement test at w = 1e-1); volume " + str(area / 8))
+
     # cube.off: unit cube, 0-based; 4 faces as quads, top and bottom each as 2 triangles (merge).
     v, f = cube_solid(*UNIT)
     polys = [f[0]["loops"][0][:3], [f[0]["loops"][0][0]] + f[0]["loops"][0][2:],
