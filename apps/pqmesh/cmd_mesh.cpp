@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "commands.hpp"
 #include "pqmesh/alpha.hpp"
@@ -153,6 +156,15 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 }  // namespace
 
 int run_mesh(const std::vector<std::string>& argv) {
+#if defined(__GLIBC__)
+  // Peak memory: glibc raises its mmap threshold each time a large block is
+  // freed, after which the big arrays of the later stages come from the heap
+  // and freed ones stay resident. A fixed threshold keeps every array above
+  // 1 MiB in its own mapping, returned to the system when freed (the mesher
+  // frees its tree and point tables before triangulating): about 70 MB less
+  // peak at 1.7 million triangles.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   const Args args(argv, {"--quiet", "--protect-edges"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);

@@ -1,6 +1,11 @@
 #pragma once
 // Per-element quality as cell data for .vtu output (io does not depend on
-// quality; the CLI computes the fields and hands them to the writer).
+// quality; the CLI computes the fields and hands them to the writer). Computed
+// element by element straight into the three fields, without a per-element
+// record array: at a few million elements that array would be the process's
+// peak memory. The mesh must have valid indices (it passed check_mesh, or was
+// read and validated).
+#include <cstddef>
 #include <vector>
 
 #include "pqmesh/mesh.hpp"
@@ -10,25 +15,32 @@
 namespace pqmesh::cli {
 
 inline std::vector<CellField> quality_fields(const TriMesh2& mesh) {
-  const std::vector<TriQuality> q = element_quality(mesh);
   std::vector<CellField> fields = {{"aspect_ratio", {}}, {"min_angle", {}}, {"max_angle", {}}};
-  for (auto& f : fields) f.values.reserve(q.size());
-  for (const TriQuality& e : q) {
-    fields[0].values.push_back(e.aspect_ratio);
-    fields[1].values.push_back(e.min_angle_deg);
-    fields[2].values.push_back(e.max_angle_deg);
+  for (auto& f : fields) f.values.resize(mesh.triangles.size());
+  const auto& v = mesh.vertices;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+    const auto& t = mesh.triangles[e];
+    const TriQuality q = triangle_quality(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
+                                          v[static_cast<std::size_t>(t[2])]);
+    fields[0].values[e] = q.aspect_ratio;
+    fields[1].values[e] = q.min_angle_deg;
+    fields[2].values[e] = q.max_angle_deg;
   }
   return fields;
 }
 
 inline std::vector<CellField> quality_fields(const TetMesh3& mesh) {
-  const std::vector<TetQuality> q = element_quality(mesh);
   std::vector<CellField> fields = {{"aspect_ratio", {}}, {"min_dihedral", {}}, {"max_dihedral", {}}};
-  for (auto& f : fields) f.values.reserve(q.size());
-  for (const TetQuality& e : q) {
-    fields[0].values.push_back(e.aspect_ratio);
-    fields[1].values.push_back(e.min_dihedral_deg);
-    fields[2].values.push_back(e.max_dihedral_deg);
+  for (auto& f : fields) f.values.resize(mesh.tetrahedra.size());
+  const auto& v = mesh.vertices;
+  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) {
+    const auto& t = mesh.tetrahedra[e];
+    const TetQuality q =
+        tetrahedron_quality(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
+                            v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[3])]);
+    fields[0].values[e] = q.aspect_ratio;
+    fields[1].values[e] = q.min_dihedral_deg;
+    fields[2].values[e] = q.max_dihedral_deg;
   }
   return fields;
 }

@@ -4,6 +4,7 @@
 // locate() second opinion.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +14,114 @@
 #include "pqmesh/errors.hpp"
 
 namespace pqmesh::detail::check2d {
+
+namespace {
+
+// The closed segment uw meets the closed rectangle [x0, x1] x [y0, y1]. Exact:
+// both are convex, so they are disjoint iff an axis or the segment's line
+// separates them (orient2d on the four corners).
+bool segment_meets_cell(Vec2 u, Vec2 w, double x0, double x1, double y0, double y1) {
+  if (std::max(u.x, w.x) < x0 || std::min(u.x, w.x) > x1 || std::max(u.y, w.y) < y0 || std::min(u.y, w.y) > y1)
+    return false;
+  int pos = 0, neg = 0;
+  for (const Vec2 q : {Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x1, y1}, Vec2{x0, y1}}) {
+    const Sign s = orient2d(u, w, q);
+    pos += s == Sign::Positive;
+    neg += s == Sign::Negative;
+  }
+  return pos < 4 && neg < 4;
+}
+
+// DomainLocator2's answers for many points, mostly without its edge scans: a
+// g x g grid of closed cells over the domain's bounding box. A cell that meets
+// no loop edge lies inside P or outside P as a whole (it is connected and
+// misses dP), which locating one of its corners tells once. A point that exact
+// comparisons place in such a cell is not on dP and lies on the same side as
+// that corner, so it takes the cell's answer; every other point (in a cell
+// that meets an edge, or where the rounded cell index misses) is located by
+// DomainLocator2 itself. The answers are therefore exactly DomainLocator2's.
+class CellLocator {
+ public:
+  CellLocator(const Domain2& d, std::size_t points) : locator_(d) {
+    const Vec2 lo = d.bbox_min, hi = d.bbox_max;
+    if (d.loops.empty() || !(hi.x > lo.x) || !(hi.y > lo.y)) return;
+    const auto& P = d.pslg.vertices;
+    // About 16 points per cell; fewer cells while the edges' bounding boxes
+    // would cover too many (long slanted edges), so building stays linear.
+    g_ = static_cast<int>(std::clamp(std::sqrt(static_cast<double>(points) / 16), 1.0, 1024.0));
+    for (;; g_ /= 2) {
+      std::size_t covered = 0;
+      for (const auto& loop : d.loops)
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+          const Vec2 u = P[static_cast<std::size_t>(loop[k])], w = P[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
+          const auto [i0, i1] = range(std::min(u.x, w.x), std::max(u.x, w.x), lo.x, hi.x);
+          const auto [j0, j1] = range(std::min(u.y, w.y), std::max(u.y, w.y), lo.y, hi.y);
+          covered += static_cast<std::size_t>(i1 - i0 + 1) * static_cast<std::size_t>(j1 - j0 + 1);
+        }
+      if (g_ == 1 || covered <= 4 * points + static_cast<std::size_t>(g_) * static_cast<std::size_t>(g_)) break;
+    }
+    xs_.resize(static_cast<std::size_t>(g_) + 1);
+    ys_.resize(static_cast<std::size_t>(g_) + 1);
+    for (int i = 0; i <= g_; ++i) {  // non-decreasing; the ends exactly the box
+      xs_[static_cast<std::size_t>(i)] = i == g_ ? hi.x : lo.x + (hi.x - lo.x) * i / g_;
+      ys_[static_cast<std::size_t>(i)] = i == g_ ? hi.y : lo.y + (hi.y - lo.y) * i / g_;
+    }
+    cell_.assign(static_cast<std::size_t>(g_) * static_cast<std::size_t>(g_), kUnknown);
+    for (const auto& loop : d.loops)
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Vec2 u = P[static_cast<std::size_t>(loop[k])], w = P[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
+        const auto [i0, i1] = range(std::min(u.x, w.x), std::max(u.x, w.x), lo.x, hi.x);
+        const auto [j0, j1] = range(std::min(u.y, w.y), std::max(u.y, w.y), lo.y, hi.y);
+        for (int i = i0; i <= i1; ++i)
+          for (int j = j0; j <= j1; ++j) {
+            std::uint8_t& c = cell_[index(i, j)];
+            if (c != kCrossed && segment_meets_cell(u, w, x(i), x(i + 1), y(j), y(j + 1))) c = kCrossed;
+          }
+      }
+    for (int i = 0; i < g_; ++i)
+      for (int j = 0; j < g_; ++j) {
+        std::uint8_t& c = cell_[index(i, j)];
+        if (c == kCrossed) continue;
+        const Location where = locator_.locate({x(i), y(j)});
+        c = where == Location::Inside ? kInside : where == Location::Outside ? kOutside : kCrossed;
+      }
+  }
+
+  Location locate(Vec2 p) const {
+    if (g_ > 0) {
+      const int i = guess(p.x, xs_.front(), xs_.back()), j = guess(p.y, ys_.front(), ys_.back());
+      if (x(i) <= p.x && p.x <= x(i + 1) && y(j) <= p.y && p.y <= y(j + 1)) {
+        const std::uint8_t c = cell_[index(i, j)];
+        if (c == kInside) return Location::Inside;
+        if (c == kOutside) return Location::Outside;
+      }
+    }
+    return locator_.locate(p);
+  }
+
+ private:
+  static constexpr std::uint8_t kUnknown = 0, kCrossed = 1, kInside = 2, kOutside = 3;
+
+  double x(int i) const { return xs_[static_cast<std::size_t>(i)]; }
+  double y(int j) const { return ys_[static_cast<std::size_t>(j)]; }
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(i) * static_cast<std::size_t>(g_) + static_cast<std::size_t>(j); }
+  // The cell column (row) of v, rounded; callers check it exactly.
+  int guess(double v, double lo, double hi) const {
+    const double t = std::floor((v - lo) / (hi - lo) * g_);
+    return t >= 0 ? (t < g_ - 1 ? static_cast<int>(t) : g_ - 1) : 0;
+  }
+  // The cells that [a, b] may meet, one extra on each side for the rounding.
+  std::array<int, 2> range(double a, double b, double lo, double hi) const {
+    return {std::max(guess(a, lo, hi) - 1, 0), std::min(guess(b, lo, hi) + 1, g_ - 1)};
+  }
+
+  const DomainLocator2 locator_;
+  int g_ = 0;
+  std::vector<double> xs_, ys_;
+  std::vector<std::uint8_t> cell_;
+};
+
+}  // namespace
 
 void Checker2::map_input_vertices(const Domain2& d) {
   const auto& pv = d.pslg.vertices;
@@ -176,7 +285,7 @@ void Checker2::check_located(const Domain2& d) {
   // Steiner point may lie an ulp outside; near_segment accepted it).
   std::vector<char> on_chain(m_.vertices.size(), 0);
   for (const int v : chain_items_) on_chain[static_cast<std::size_t>(v)] = 1;
-  const DomainLocator2 locator(d);
+  const CellLocator locator(d, m_.vertices.size());
   for (std::size_t v = 0; v < m_.vertices.size(); ++v)
     if (!on_chain[v] && locator.locate(m_.vertices[v]) == Location::Outside)
       sink_.add(CheckKind::VertexOutside, {static_cast<std::int64_t>(v)},

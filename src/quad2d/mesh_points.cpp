@@ -9,14 +9,65 @@
 
 #include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
+#include "quad2d/radix_sort.hpp"
 
 namespace pqmesh::quad2d {
 
 namespace {
 
-struct Corner {
-  double x, y;
-  std::int32_t leaf;
+// Leaf corners as integers: every corner is (x0 + ix * unit, y0 + iy * unit)
+// exactly, with unit half the smallest leaf side (corners of a leaf of side h
+// are multiples of h / 2 from the root's origin, all powers of two) and
+// (x0, y0) the lowest corner coordinates; x - x0 is then an exact multiple of
+// unit below 2^53 units, so the conversions both ways are exact and integer
+// order is coordinate order.
+struct CornerGrid {
+  double x0 = 0, y0 = 0, unit = 1, inv_unit = 1;
+  int xbits = 0, ybits = 0;  // bits of the largest ix and iy
+  std::uint64_t ix(double x) const { return static_cast<std::uint64_t>((x - x0) * inv_unit); }
+  std::uint64_t iy(double y) const { return static_cast<std::uint64_t>((y - y0) * inv_unit); }
+  Vec2 point(std::uint64_t i, std::uint64_t j) const {
+    return {x0 + static_cast<double>(i) * unit, y0 + static_cast<double>(j) * unit};
+  }
+};
+
+// A leaf corner packed in one word, (ix, iy, busy) with busy the lowest bit
+// (1: the leaf meets an input edge or lies in a vertex box), when
+// xbits + ybits + 1 <= 64 (trees up to about 30 levels below the domain's
+// extent); sorting the words sorts by (x, y).
+struct NarrowCorners {
+  using Key = std::uint64_t;
+  const CornerGrid& g;
+  Key make(std::uint64_t i, std::uint64_t j, bool busy) const {
+    return (((i << g.ybits) | j) << 1) | static_cast<Key>(busy);
+  }
+  bool same(Key a, Key b) const { return (a >> 1) == (b >> 1); }
+  bool busy(Key k) const { return (k & 1u) != 0; }
+  Vec2 point(Key k) const {
+    const Key c = k >> 1;
+    return g.point(c >> g.ybits, c & ((Key{1} << g.ybits) - 1));
+  }
+  void sort(std::vector<Key>& v) const {
+    std::vector<Key> scratch;
+    radix_sort(v, g.xbits + g.ybits + 1, [](Key k) { return k; }, scratch);
+  }
+};
+
+// Deeper trees: ix and (iy, busy) in two words, sorted by (ix, iy, busy).
+struct WideCorners {
+  struct Key {
+    std::uint64_t i, j;  // j = iy << 1 | busy
+  };
+  const CornerGrid& g;
+  Key make(std::uint64_t i, std::uint64_t j, bool busy) const { return {i, (j << 1) | static_cast<std::uint64_t>(busy)}; }
+  bool same(Key a, Key b) const { return a.i == b.i && (a.j >> 1) == (b.j >> 1); }
+  bool busy(Key k) const { return (k.j & 1u) != 0; }
+  Vec2 point(Key k) const { return g.point(k.i, k.j >> 1); }
+  void sort(std::vector<Key>& v) const {
+    std::vector<Key> scratch;
+    radix_sort(v, g.ybits + 1, [](Key k) { return k.j; }, scratch);
+    radix_sort(v, g.xbits, [](Key k) { return k.i; }, scratch);
+  }
 };
 
 struct Tagged {
@@ -89,12 +140,11 @@ class PointGenerator {
   PointGenerator(const QuadtreeBuilder& b, QuadMeshStats& stats) : b_(b), d_(b.domain()), stats_(stats) {}
 
   MeshPoints run() {
-    collect_corners();
-    find_crossings();
-    release(by_x_);  // peak memory: each table goes as soon as it has served
-    release(by_y_);
-    place_corners();
-    release(corners_);
+    make_grid();
+    if (grid_.xbits + grid_.ybits + 1 <= 64)
+      corner_phase(NarrowCorners{grid_});
+    else
+      corner_phase(WideCorners{grid_});
     place_crossings();
     return assemble();
   }
@@ -115,50 +165,82 @@ class PointGenerator {
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) < c * c;
   }
 
-  void collect_corners() {
+  // The leaves that meet P and the integer grid of their corners.
+  void make_grid() {
+    const double inf = std::numeric_limits<double>::infinity();
+    double x0 = inf, y0 = inf, x1 = -inf, y1 = -inf, h = inf;
     for (const std::int32_t n : b_.leaves_by_id()) {
       if (!b_.data(n).has_component) continue;
       leaves_.push_back(n);
       const Square s = b_.square(n);
-      for (int k = 0; k < 4; ++k)
-        corners_.push_back({s.lo.x + (k & 1) * s.side, s.lo.y + (k >> 1) * s.side, n});
+      x0 = std::min(x0, s.lo.x);
+      y0 = std::min(y0, s.lo.y);
+      x1 = std::max(x1, s.lo.x + s.side);
+      y1 = std::max(y1, s.lo.y + s.side);
+      h = std::min(h, s.side);
     }
-    std::sort(corners_.begin(), corners_.end(),
-              [](const Corner& a, const Corner& c) { return std::tie(a.x, a.y, a.leaf) < std::tie(c.x, c.y, c.leaf); });
-    for (const Corner& c : corners_)
-      if (by_x_.empty() || by_x_.back().x != c.x || by_x_.back().y != c.y) by_x_.push_back({c.x, c.y});
+    if (leaves_.empty()) return;
+    grid_.x0 = x0;
+    grid_.y0 = y0;
+    grid_.unit = h / 2;
+    grid_.inv_unit = 1 / grid_.unit;  // exact: a power of two
+    grid_.xbits = bit_width64(grid_.ix(x1));
+    grid_.ybits = bit_width64(grid_.iy(y1));
+  }
+
+  // Every leaf corner (once per leaf) sorted by (x, y); the distinct corners
+  // by (x, y) and by (y, x) for find_crossings; then the corners are placed.
+  template <class Codec>
+  void corner_phase(const Codec& codec) {
+    std::vector<typename Codec::Key> corners;
+    corners.reserve(4 * leaves_.size());
+    for (const std::int32_t n : leaves_) {
+      const NodeData& nd = b_.data(n);
+      const bool busy = !nd.square_edges.empty() || nd.vertex_owner >= 0;
+      const Square s = b_.square(n);
+      const std::uint64_t i = grid_.ix(s.lo.x), j = grid_.iy(s.lo.y), w = grid_.ix(s.lo.x + s.side) - i;
+      for (int k = 0; k < 4; ++k) corners.push_back(codec.make(i + (k & 1) * w, j + (k >> 1) * w, busy));
+    }
+    codec.sort(corners);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      if (i == 0 || !codec.same(corners[i - 1], corners[i])) by_x_.push_back(codec.point(corners[i]));
     by_y_ = by_x_;
-    std::sort(by_y_.begin(), by_y_.end(), [](Vec2 a, Vec2 c) { return std::tie(a.y, a.x) < std::tie(c.y, c.x); });
+    {
+      std::vector<Vec2> scratch;
+      radix_sort(by_y_, grid_.xbits, [this](Vec2 p) { return grid_.ix(p.x); }, scratch);
+      radix_sort(by_y_, grid_.ybits, [this](Vec2 p) { return grid_.iy(p.y); }, scratch);
+    }
+    find_crossings();
+    release(by_x_);  // peak memory: each table goes as soon as it has served
+    release(by_y_);
+    place_corners(corners, codec);
   }
 
   // Corners: warp, keep, or drop (docs/ALGORITHM.md §8.5).
-  void place_corners() {
+  template <class Codec>
+  void place_corners(std::vector<typename Codec::Key>& corners, const Codec& codec) {
     std::vector<int> segs;
-    for (std::size_t i = 0; i < corners_.size();) {
+    for (std::size_t i = 0; i < corners.size();) {
       std::size_t j = i;
-      while (j < corners_.size() && corners_[j].x == corners_[i].x && corners_[j].y == corners_[i].y) ++j;
-      place_corner(i, j, segs);
+      bool busy = false;
+      for (; j < corners.size() && codec.same(corners[i], corners[j]); ++j)
+        if (codec.busy(corners[j])) busy = true;
+      // Fast path: c is a corner of four leaves (so of no larger leaf's side),
+      // none meets an input edge or lies in a vertex box: c is inside P, far
+      // from the boundary, and stays as it is.
+      if (j - i == 4 && !busy)
+        plain_.push_back(codec.point(corners[i]));
+      else
+        place_corner(codec.point(corners[i]), segs);
       i = j;
     }
+    release(corners);
     std::sort(snaps_.begin(), snaps_.end());
   }
 
-  void place_corner(std::size_t first, std::size_t last, std::vector<int>& segs) {
-    const Vec2 c{corners_[first].x, corners_[first].y};
-    // Fast path: c is a corner of four leaves (so of no larger leaf's side),
-    // none meets an input edge or lies in a vertex box: c is inside P, far
-    // from the boundary, and stays as it is.
-    if (last - first == 4) {
-      bool plain = true;
-      for (std::size_t k = first; k < last && plain; ++k) {
-        const NodeData& nd = b_.data(corners_[k].leaf);
-        plain = nd.square_edges.empty() && nd.vertex_owner < 0;
-      }
-      if (plain) {
-        points_.push_back({c, -1, -1});
-        return;
-      }
-    }
+  // A corner that is not on the fast path. Points it keeps as they are go to
+  // plain_ (in (x, y) order, as the corners come), the others to points_.
+  void place_corner(const Vec2 c, std::vector<int>& segs) {
     double h = std::numeric_limits<double>::infinity(), h_max = 0;
     segs.clear();
     std::int32_t edge_leaf = -1;
@@ -206,7 +288,7 @@ class PointGenerator {
       const SquareComponents sc = b_.components_of(edge_leaf);
       if (locate_component(d_, sc, c) < 0) return;  // outside P
     }
-    points_.push_back({c, -1, -1});
+    plain_.push_back(c);
   }
 
   bool snapped(Vec2 c, int segment) const { return std::binary_search(snaps_.begin(), snaps_.end(), Snap{c.x, c.y, segment}); }
@@ -324,6 +406,9 @@ class PointGenerator {
                   points_.end());
   }
 
+  // The points in (x, y) order, merged from plain_ (sorted, distinct, none
+  // on a segment or an input vertex) and the sorted points_; at equal
+  // coordinates the plain point comes first, as (x, y, -1, -1) sorts first.
   MeshPoints assemble() {
     thin_segments();
     for (std::size_t v = 0; v < d_.pslg.vertices.size(); ++v) points_.push_back({d_.pslg.vertices[v], -1, static_cast<int>(v)});
@@ -334,22 +419,36 @@ class PointGenerator {
       return std::tie(a.p.x, a.p.y, a.vertex, a.segment) < std::tie(c.p.x, c.p.y, c.vertex, c.segment);
     });
     MeshPoints out;
+    out.points.reserve(plain_.size() + points_.size());
+    out.input_vertex.reserve(plain_.size() + points_.size());
     out.segment_chain.assign(d_.pslg.segments.size(), {});
     std::vector<int> vertex_point(d_.pslg.vertices.size(), -1);
-    for (std::size_t i = 0; i < points_.size();) {
+    const auto same = [](Vec2 u, Vec2 w) { return u.x == w.x && u.y == w.y; };
+    const auto less = [](Vec2 u, Vec2 w) { return u.x < w.x || (u.x == w.x && u.y < w.y); };
+    std::size_t next_plain = 0, i = 0;  // next in plain_, next in points_
+    while (next_plain < plain_.size() || i < points_.size()) {
+      const bool take_plain =
+          i == points_.size() || (next_plain < plain_.size() && !less(points_[i].p, plain_[next_plain]));
+      const Vec2 p = take_plain ? plain_[next_plain] : points_[i].p;
+      std::size_t count = 0;
+      if (take_plain) {
+        ++next_plain;
+        ++count;
+      }
       std::size_t j = i;
       int vertex_id = -1;
-      while (j < points_.size() && points_[j].p.x == points_[i].p.x && points_[j].p.y == points_[i].p.y) {
+      while (j < points_.size() && same(points_[j].p, p)) {
         vertex_id = std::max(vertex_id, points_[j].vertex);
         ++j;
+        ++count;
       }
       if (vertex_id >= 0 && !on_loop[static_cast<std::size_t>(vertex_id)]) vertex_id = -2;  // isolated input vertex
-      if (vertex_id == -2 && j - i == 1) {  // isolated vertices are not meshed (docs/ALGORITHM.md §8.5)
+      if (vertex_id == -2 && count == 1) {  // isolated vertices are not meshed (docs/ALGORITHM.md §8.5)
         i = j;
         continue;
       }
       const int id = static_cast<int>(out.points.size());
-      out.points.push_back(points_[i].p);
+      out.points.push_back(p);
       out.input_vertex.push_back(vertex_id >= 0 ? vertex_id : -1);
       if (vertex_id >= 0) vertex_point[static_cast<std::size_t>(vertex_id)] = id;
       for (std::size_t k = i; k < j; ++k)
@@ -359,6 +458,8 @@ class PointGenerator {
         }
       i = j;
     }
+    release(plain_);
+    release(points_);
     for (std::size_t s = 0; s < d_.pslg.segments.size(); ++s) {
       const auto& seg = d_.pslg.segments[s];
       const int pa = vertex_point[static_cast<std::size_t>(seg[0])], pb = vertex_point[static_cast<std::size_t>(seg[1])];
@@ -382,13 +483,14 @@ class PointGenerator {
   const Domain2& d_;
   QuadMeshStats& stats_;
   std::vector<std::int32_t> leaves_;
-  std::vector<Corner> corners_;
+  CornerGrid grid_;
   std::vector<Vec2> by_x_, by_y_;  // distinct corners sorted by (x, y) and by (y, x)
   std::vector<Snap> snaps_;
   std::vector<Snap> forced_;        // (corner, segment): a crossing forces the corner onto the segment
   std::vector<Crossing> crossings_;
   std::vector<std::int32_t> around_;
-  std::vector<Tagged> points_;
+  std::vector<Vec2> plain_;     // corners kept where they are, in (x, y) order
+  std::vector<Tagged> points_;  // the other points: on segments, input vertices
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "pqmesh/quadmesh.hpp"
 #include "quad2d/mesh_points.hpp"
 #include "quad2d/quadtree_builder.hpp"
+#include "quad2d/radix_sort.hpp"
 #include "quad2d/size_function.hpp"
 
 namespace pqmesh {
@@ -20,13 +21,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Interleaves the low 21 bits of x and y (x least significant).
-std::uint64_t morton(std::uint32_t x, std::uint32_t y) {
-  std::uint64_t key = 0;
-  for (int b = 0; b < 21; ++b)
-    key |= (static_cast<std::uint64_t>((x >> b) & 1u) << (2 * b)) | (static_cast<std::uint64_t>((y >> b) & 1u) << (2 * b + 1));
-  return key;
+// Spreads the low 21 bits of v to the even bit positions 0, 2, ..., 40.
+std::uint64_t spread21(std::uint32_t v) {
+  std::uint64_t x = v & 0x1FFFFFu;
+  x = (x | (x << 16)) & 0x0000FFFF0000FFFFull;
+  x = (x | (x << 8)) & 0x00FF00FF00FF00FFull;
+  x = (x | (x << 4)) & 0x0F0F0F0F0F0F0F0Full;
+  x = (x | (x << 2)) & 0x3333333333333333ull;
+  x = (x | (x << 1)) & 0x5555555555555555ull;
+  return x;
 }
+
+// Interleaves the low 21 bits of x and y (x least significant).
+std::uint64_t morton(std::uint32_t x, std::uint32_t y) { return spread21(x) | (spread21(y) << 1); }
 
 // A spatially coherent order of the points (z-order on a 2^21 grid over the
 // bounding box, ties by coordinates): the triangulation's point location walks
@@ -40,8 +47,10 @@ std::vector<int> z_order(const std::vector<Vec2>& pts, Vec2 lo, Vec2 hi) {
     const auto qy = static_cast<std::uint32_t>(std::clamp((pts[i].y - lo.y) * scale, 0.0, 2097151.0));
     keyed[i] = {morton(qx, qy), static_cast<int>(i)};
   }
-  // Points are sorted by (x, y) already, so ties by index are ties by coordinates.
-  std::sort(keyed.begin(), keyed.end());
+  // Points are sorted by (x, y) already, so ties by index are ties by
+  // coordinates; the radix sort is stable, which keeps ties in index order.
+  std::vector<std::pair<std::uint64_t, int>> scratch;
+  quad2d::radix_sort(keyed, 42, [](const std::pair<std::uint64_t, int>& k) { return k.first; }, scratch);
   std::vector<int> order(pts.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
   return order;

@@ -3,6 +3,7 @@
 #include "quad2d/quadtree_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "pqmesh/errors.hpp"
@@ -252,6 +253,21 @@ bool QuadtreeBuilder::edge_crowded(std::int32_t node) const {
   return false;
 }
 
+// With a global size cap h, the size phase alone leaves boxes of side at most
+// h over all of P: about area(P) / s^2 leaves for s the largest power-of-two
+// fraction of the root side that is <= h, and a third more inner nodes.
+// Reserving that much up front spares the tree's key index its rehashing as
+// it grows (a capacity hint: the tree is the same without it).
+void QuadtreeBuilder::reserve_for_size_phase() {
+  const double h = size_.max_size();
+  if (!(h > 0)) return;
+  const double root = tree_.side(0);
+  if (!(h < root)) return;
+  const double s = std::ldexp(root, -static_cast<int>(std::ceil(std::log2(root / h))));
+  const double nodes = std::min(4.0 / 3.0 * domain_.area / (s * s), 0x1p26);
+  if (nodes > 1024) tree_.reserve(static_cast<std::int32_t>(nodes));
+}
+
 void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(std::int32_t) const) {
   std::vector<std::int32_t> work = leaves_by_id();
   std::int64_t& counter = phase == Phase::Size     ? stats_.splits_size
@@ -355,6 +371,7 @@ void QuadtreeBuilder::protect_edges() {
 
 void QuadtreeBuilder::build() {
   init_root();
+  reserve_for_size_phase();
   if (size_.active()) run_phase(Phase::Size, &QuadtreeBuilder::size_crowded);
   run_phase(Phase::Vertex, &QuadtreeBuilder::vertex_crowded);
   center_vertices();

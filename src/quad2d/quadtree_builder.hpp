@@ -101,6 +101,7 @@ class QuadtreeBuilder {
   bool vertex_crowded(std::int32_t node) const;
   bool edge_crowded(std::int32_t node) const;
 
+  void reserve_for_size_phase();
   void run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(std::int32_t) const);
   void center_vertices();
   void protect_edges();

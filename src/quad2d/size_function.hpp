@@ -15,6 +15,8 @@ class SizeFunction2 {
   // or non-finite max_size.
   explicit SizeFunction2(const QuadMeshOptions& options);
   bool active() const { return max_size_ > 0 || !field_.points.empty(); }
+  // The global cap (0: none); the field only asks for smaller boxes.
+  double max_size() const { return max_size_; }
   // min over x in the closed square of f(x), f(x) = min(max_size, min_i sizes[i] + |x - points[i]|).
   double min_over(const Square& square) const;
 

@@ -135,7 +135,10 @@ class Tree {
   }
 
   // ---- exact geometry
-  double side(std::int32_t n) const { return std::ldexp(1.0, root_exp_ - level(n)); }
+  double side(std::int32_t n) const {
+    const std::int32_t l = level(n);
+    return l <= max_level_ ? 2 * half_side_[static_cast<std::size_t>(l)] : std::ldexp(1.0, root_exp_ - l);
+  }
   // Lower (upper = false) or upper plane of the box along `axis`, an exact double.
   double plane(std::int32_t n, int axis, bool upper) const { return key_plane(key(n), axis, upper); }
   double key_plane(const Key& k, int axis, bool upper) const;
@@ -273,6 +276,9 @@ class Tree {
   std::int64_t root_m_[D] = {};  // root origin / (S / 2), integers
   int root_exp_ = 0;             // S = 2^root_exp_
   std::int32_t max_level_ = 0;
+  // half_side_[L] = 2^(root_exp_ - L - 1), L <= max_level_: normal doubles, so
+  // multiplying by them is exact (as std::ldexp, which is much slower).
+  std::array<double, kTreeMaxLevel + 1> half_side_{};
   std::int32_t leaf_count_ = 0;
   std::int32_t merged_count_ = 0;  // merge() calls so far
   detail::ChunkedVector<Node> nodes_;

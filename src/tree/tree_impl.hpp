@@ -27,6 +27,7 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
   while (max_level_ > 0 &&
          (worst + 2 > (std::int64_t{1} << (53 - max_level_)) || root_exp_ - max_level_ - 1 < -1021))
     --max_level_;
+  for (std::int32_t l = 0; l <= max_level_; ++l) half_side_[static_cast<std::size_t>(l)] = std::ldexp(1.0, root_exp_ - l - 1);
   nodes_.push_back(Node{});
   link_key_new(0, 0);
   leaf_count_ = 1;
@@ -35,6 +36,7 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
 template <int D>
 double Tree<D>::key_plane(const Key& k, int axis, bool upper) const {
   const std::int64_t n = (root_m_[axis] << k.level) + k.q[axis] + (upper ? 2 : 0);
+  if (k.level <= max_level_) return static_cast<double>(n) * half_side_[static_cast<std::size_t>(k.level)];
   return std::ldexp(static_cast<double>(n), root_exp_ - k.level - 1);
 }
 
