@@ -2,6 +2,7 @@
 // domain and write its leaves as VTK hexahedra (.vtu, ASCII) with per-leaf data.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "atomic_file.hpp"
+#include "io/read_text_tokens.hpp"
 #include "commands.hpp"
 #include "load.hpp"
 #include "mv3d/octree_builder.hpp"
@@ -26,6 +28,7 @@ const char* phase_name(mv3d::OctPhase p) {
     case mv3d::OctPhase::Edge: return "edge";
     case mv3d::OctPhase::Facet: return "facet";
     case mv3d::OctPhase::Balance: return "balance";
+    case mv3d::OctPhase::Size: return "size";
   }
   return "?";
 }
@@ -88,10 +91,41 @@ std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int3
   return s.str();
 }
 
+// The 3D size field of `pqmesh octree --size-field` (docs/FORMATS.md "3D size
+// fields"): one point per line, `x y z size`; the errors of the 2D reader
+// (src/io/read_size_field.cpp), with four fields instead of three.
+mv3d::SizeField3 read_size_field3(const std::string& path) {
+  detail::TextSource src(path);
+  mv3d::SizeField3 field;
+  field.path = path;
+  static constexpr const char* kNames[4] = {"x", "y", "z", "size"};
+  detail::TextRecord record;
+  while (src.next_record(record)) {
+    if (record.tokens.size() != 4)
+      src.fail(ErrorCode::WrongCount, "expected 4 fields 'x y z size', found " + std::to_string(record.tokens.size()),
+               record.line);
+    double v[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+      const std::string_view token = record.tokens[static_cast<std::size_t>(i)];
+      if (!detail::parse_double(token, v[i]))
+        src.fail(ErrorCode::Syntax, std::string(kNames[i]) + " is not a number: '" + std::string(token) + "'", record.line);
+      if (!std::isfinite(v[i]))
+        src.fail(ErrorCode::NonFinite, std::string(kNames[i]) + " is not finite: '" + std::string(token) + "'", record.line);
+    }
+    if (!(v[3] > 0))
+      src.fail(ErrorCode::Syntax, "size must be positive, found '" + std::string(record.tokens[3]) + "'", record.line);
+    field.points.push_back({v[0], v[1], v[2]});
+    field.sizes.push_back(v[3]);
+    field.lines.push_back(record.line);
+  }
+  if (field.points.empty()) src.fail(ErrorCode::WrongCount, "the size field lists no points", src.last_line());
+  return field;
+}
+
 }  // namespace
 
 int run_octree(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-merge"}, {"-o", "--output", "--merge-angle"});
+  const Args args(argv, {"--quiet", "--no-merge"}, {"-o", "--output", "--merge-angle", "--max-size", "--size-field"});
   args.expect_positional(1, 1);
   const std::string& input = args.positional()[0];
   const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
@@ -101,6 +135,14 @@ int run_octree(const std::vector<std::string>& argv) {
   if (output.size() < 4 || output.compare(output.size() - 4, 4, ".vtu") != 0)
     throw UsageError("the octree is written as .vtu; OUTPUT must end in .vtu");
 
+  mv3d::OctreeOptions options;
+  if (args.option("--max-size")) {
+    options.max_size = args.number("--max-size", 0);  // throws UsageError unless a finite number
+    if (!(options.max_size > 0))
+      throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
+  }
+  if (const auto field = args.option("--size-field")) options.size_field = read_size_field3(*field);
+
   const LoadedDomain loaded = load_domain(input, read_options_from(args));
   const auto* domain = std::get_if<Domain3>(&loaded.domain);
   if (!domain) {
@@ -108,7 +150,7 @@ int run_octree(const std::vector<std::string>& argv) {
     return kExitInvalidInput;
   }
   const auto start = std::chrono::steady_clock::now();
-  mv3d::OctreeBuilder builder(*domain);
+  mv3d::OctreeBuilder builder(*domain, std::move(options));
   builder.build();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -129,16 +171,21 @@ int run_octree(const std::vector<std::string>& argv) {
               << "leaves     " << s.leaves << " (" << s.outside_leaves << " outside P, " << protected_leaves
               << " protected, " << duplicate_leaves << " on duplicated cubes)\n"
               << "depth      " << deepest << " (root side " << builder.tree().root().size << ")\n"
-              << "splits     vertex " << s.splits_vertex << ", centering " << s.splits_centering << ", edge "
+              << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", centering " << s.splits_centering << ", edge "
               << s.splits_edge << ", facet " << s.splits_facet << ", balance " << s.splits_balance << '\n'
               << "duplicates " << s.duplicates << " created\n"
               << "components " << s.components_split << " at splits, " << s.components_extended
               << " extended boxes, " << s.components_adjacency << " adjacency queries\n"
-              << "vertex boxes " << s.vertex_boxes << '\n'
+              << "vertex boxes " << s.vertex_boxes << '\n';
+    std::cout << "phases     (leaves at the end, seconds)";
+    for (int p = 0; p < mv3d::OctreeStats::kPhases; ++p)
+      std::cout << (p % 3 == 0 ? "\n          " : ",") << ' ' << mv3d::OctreeStats::kPhaseNames[p] << ' '
+                << s.phase_leaves[p] << ' ' << s.phase_seconds[p] << " s";
+    std::cout << '\n'
               << "time       " << seconds << " s\n"
               << "output     " << output << " (VTK hexahedra; cell data level, component, duplicate, protected,\n"
               << "           phase " << phase_name(mv3d::OctPhase::Root) << "=0 vertex=1 centering=2 edge=3 facet=4 "
-              << "balance=5, vertex_owner)\n";
+              << "balance=5 size=6, vertex_owner)\n";
   }
   return kExitOk;
 }

@@ -2,8 +2,8 @@
 // outward shift C -> C_e. Outline:
 //   1. the facet triangles meeting C_e (exact: a vertex in C, a triangle side
 //      crossing a face of C_e, or an edge of C_e crossing the triangle);
-//   2. fast path: the facets meeting C share a vertex v in C (a cone with
-//      apex in C) -> P ∩ C is star-shaped from v, one component;
+//   2. fast path: the facets meeting C form one cone whose apex meets C
+//      (single_cone below) -> P ∩ C is connected, one component;
 //   3. sheets: a triangle meets C_e in a convex piece; two pieces share a
 //      point iff the triangles share a vertex in C or a side meeting C_e (the
 //      facet triangles of a valid domain meet only in common sides and
@@ -36,10 +36,12 @@
 //      face x = xhi + e, which is a node on a probe line. The tether lies in
 //      P (points just right of v are outside the floater's cavity). The
 //      exterior shell inside C needs nothing (its component is P);
-//   6. status along a line: the cube edges are located in P by parity of
-//      their crossings with every triangle before the edge starts (from
-//      -infinity), so the corners are located exactly; a probe line starts at
-//      a junction on a cube edge whose status is known from that edge's walk.
+//   6. status along a line: corner 0 of C_e is given (CubeHint: walked from
+//      an enclosing box's corner 0 by the caller, or by parity from -infinity
+//      over every triangle in the from-scratch overload); each cube edge
+//      starts at a corner reached by an earlier edge walk, so every corner is
+//      located exactly; a probe line starts at a junction on a cube edge whose
+//      status is known from that edge's walk.
 // Genericity (why no event position ties and no predicate is zero): a K line
 // has two fixed coordinates; one carries e^k of a shifted plane, the other
 // e^j (cube edges), the offset -d (side-crossing probes) or d^2 (tether
@@ -83,7 +85,7 @@ struct UnionFind {
 };
 
 struct Event {
-  Pert pos;
+  Pos pos;
   int node = -1;      // union-find element
   bool crossing = false;
   bool entering = false;
@@ -103,7 +105,7 @@ struct KLine {
 // their global ids (the crossings inside the range are with them).
 void walk(const Domain3& dom, const Cube& c, KLine& kl, bool status, const std::vector<int>& triangles, UnionFind& uf,
           std::vector<signed char>& node_in_p) {
-  const Pert lo = plane(c, kl.line.d, 0), hi = plane(c, kl.line.d, 1);
+  const Pos lo = plane_pos(c, kl.line.d, 0), hi = plane_pos(c, kl.line.d, 1);
   std::vector<Event> ev = std::move(kl.nodes);
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& tri = dom.facet_triangles[static_cast<std::size_t>(triangles[i])];
@@ -111,7 +113,7 @@ void walk(const Domain3& dom, const Cube& c, KLine& kl, bool status, const std::
     if (!line_hit(kl.line, dom.plc.vertices[static_cast<std::size_t>(tri[0])], dom.plc.vertices[static_cast<std::size_t>(tri[1])],
                   dom.plc.vertices[static_cast<std::size_t>(tri[2])], e.pos, e.entering))
       continue;
-    const int rl = detail::compare(e.pos, lo), rh = detail::compare(e.pos, hi);
+    const int rl = compare(e.pos, lo), rh = compare(e.pos, hi);
     if (rl == 0 || rh == 0) throw InternalError("mv3d: a triangle meets a K line at its end");
     if (rl < 0 || rh > 0) continue;
     e.node = static_cast<int>(i);
@@ -121,7 +123,7 @@ void walk(const Domain3& dom, const Cube& c, KLine& kl, bool status, const std::
   std::vector<std::size_t> order(ev.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-    const int r = detail::compare(ev[i].pos, ev[j].pos);
+    const int r = compare(ev[i].pos, ev[j].pos);
     if (r != 0) return r < 0;
     return i < j;
   });
@@ -209,6 +211,51 @@ int common_apex(const Domain3& dom, const Cube& c, const std::vector<int>& tris)
   return common.empty() ? -1 : common[0];
 }
 
+// The star-shaped rule (issue 4 item 7): the facets meeting C_e form one
+// cone whose apex meets C, so P ∩ C is connected:
+//   * a vertex v in C common to every facet meeting C (a vertex cone; P ∩ C
+//     is star-shaped from v);
+//   * no vertex in C, exactly one P edge meets C_e and every facet meeting
+//     C_e is one of its two facets (an edge cone): the edge crosses C_e in a
+//     chord, each facet meets C_e in the half of its plane on one side of the
+//     chord (its other edges miss C_e), and the two half-planes split C_e
+//     into two connected regions, one of them P ∩ C_e;
+//   * no vertex in C, no P edge meets C_e and one facet meets it: the facet
+//     meets C_e in its whole plane section, so P ∩ C_e is convex.
+bool single_cone(const Domain3& dom, const Cube& c, const std::vector<int>& tris) {
+  if (common_apex(dom, c, tris) >= 0) return true;
+  std::vector<std::array<int, 2>> sides;
+  for (const int t : tris)
+    for (int j = 0; j < 3; ++j) {
+      const auto& tri = dom.facet_triangles[static_cast<std::size_t>(t)];
+      const int v = tri[static_cast<std::size_t>(j)], w = tri[static_cast<std::size_t>((j + 1) % 3)];
+      if (vertex_inside(dom.plc.vertices[static_cast<std::size_t>(v)], c)) return false;
+      sides.push_back({std::min(v, w), std::max(v, w)});
+    }
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  int edge = -1;
+  for (const auto& s : sides) {
+    const int e = edge_index(dom, s[0], s[1]);
+    if (e < 0 || !segment_meets(dom.plc.vertices[static_cast<std::size_t>(s[0])], dom.plc.vertices[static_cast<std::size_t>(s[1])], c))
+      continue;
+    if (edge >= 0) return false;
+    edge = e;
+  }
+  if (edge >= 0) {
+    const DomainEdge& de = dom.edges[static_cast<std::size_t>(edge)];
+    for (const int t : tris) {
+      const int f = dom.facet_triangle_owner[static_cast<std::size_t>(t)];
+      if (f != de.facets[0] && f != de.facets[1]) return false;
+    }
+    return true;
+  }
+  const int f0 = dom.facet_triangle_owner[static_cast<std::size_t>(tris[0])];
+  for (const int t : tris)
+    if (dom.facet_triangle_owner[static_cast<std::size_t>(t)] != f0) return false;
+  return true;
+}
+
 }  // namespace
 
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates) {
@@ -228,15 +275,47 @@ std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube) {
   return triangles_meeting(domain, cube, all);
 }
 
+bool corner0_in(const Domain3& domain, const Cube& cube) {
+  // From -infinity along x to corner 0, by parity over every triangle.
+  const Line l = make_line(0, plane_pos(cube, 1, 0), plane_pos(cube, 2, 0));
+  const Pos lo = plane_pos(cube, 0, 0);
+  bool status = false;
+  for (const auto& tri : domain.facet_triangles) {
+    Pos pos;
+    bool entering = false;
+    if (!line_hit(l, domain.plc.vertices[static_cast<std::size_t>(tri[0])], domain.plc.vertices[static_cast<std::size_t>(tri[1])],
+                  domain.plc.vertices[static_cast<std::size_t>(tri[2])], pos, entering))
+      continue;
+    const int r = compare(pos, lo);
+    if (r == 0) throw InternalError("mv3d: a triangle passes through a corner of a shifted cube");
+    if (r < 0) status = !status;
+  }
+  return status;
+}
+
+bool corner0_in_from(const Domain3& domain, const Cube& inner, const Cube& outer, bool outer_corner0_in,
+                     std::span<const int> outer_tris) {
+  return walk_status(domain, outer_tris, corner_point(outer, 0), outer_corner0_in, corner_point(inner, 0));
+}
+
 CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fast_path, std::span<const Vec3> marks) {
+  std::vector<int> all(domain.facet_triangles.size());
+  std::iota(all.begin(), all.end(), 0);
+  const std::vector<int> tris = triangles_meeting(domain, cube, all);
+  return components(domain, cube, CubeHint{tris, true, corner0_in(domain, cube)}, allow_fast_path, marks);
+}
+
+CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHint& hint, bool allow_fast_path,
+                          std::span<const Vec3> marks) {
   CubeComponents out;
   out.cube = cube;
-  const std::vector<int> tris = triangles_meeting(domain, cube);
+  std::vector<int> tris;
+  if (hint.candidates_exact) tris.assign(hint.candidates.begin(), hint.candidates.end());
+  else tris = triangles_meeting(domain, cube, std::vector<int>(hint.candidates.begin(), hint.candidates.end()));
   if (tris.empty()) {
-    // No P face meets C: C lies in int P or in its exterior; the centre is
-    // not on ∂P, so exact point location decides.
-    const Vec3 centre = 0.5 * (cube.lo + cube.hi);
-    const bool in = locate(domain, centre) == Location::Inside;
+    // No P face meets C_e: C_e lies in int P or in its exterior, as its
+    // corner 0 does.
+    const bool in = hint.corner0_in;
     if (in) {
       out.components.emplace_back();
       out.components.back().whole_cube = true;
@@ -245,11 +324,18 @@ CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fa
     return out;
   }
   const std::size_t m = tris.size();
-  if (allow_fast_path && common_apex(domain, cube, tris) >= 0) {
+  if (allow_fast_path && single_cone(domain, cube, tris)) {
     out.fast_path = true;
     out.components.emplace_back();
     fill_faces(domain, cube, tris, std::vector<int>(m, 0), out);
-    for (const Vec3 p : marks) out.mark_component.push_back(locate(domain, p) == Location::Inside ? 0 : -1);
+    // A mark p (off ∂P) is located by the walk from corner 0 to
+    // p' = (p.x + d, p.y + d^2, p.z) inside C_e: the legs' fixed coordinates
+    // carry distinct infinitesimals, and p' lies on a triangle only if p does.
+    const PPoint c0 = corner_point(cube, 0);
+    for (const Vec3 p : marks) {
+      const PPoint to{Pos::of_double(p.x, detail::kD1, 1), Pos::of_double(p.y, detail::kD2, 1), Pos::of_double(p.z)};
+      out.mark_component.push_back(walk_status(domain, tris, c0, hint.corner0_in, to) ? 0 : -1);
+    }
     return out;
   }
 
@@ -301,10 +387,10 @@ CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fa
   // A probe on the face (axis a, side), direction d = (a + 1) % 3, fixed
   // coordinate `fc` on axis c = (a + 2) % 3; its ends are junctions on the
   // cube edges along c with a at `side` and d at 0 / 1.
-  const auto add_probe = [&](int a, int side, Pert fc) {
+  const auto add_probe = [&](int a, int side, Pos fc) {
     const int d = (a + 1) % 3, c = (a + 2) % 3;
     KLine kl;
-    kl.line = make_line(d, std::move(fc), plane(cube, a, side));  // f1 on (d+1)%3 = c, f2 on (d+2)%3 = a
+    kl.line = make_line(d, std::move(fc), plane_pos(cube, a, side));  // f1 on (d+1)%3 = c, f2 on (d+2)%3 = a
     kl.start = add_node();
     kl.end = add_node();
     for (int s = 0; s < 2; ++s) {
@@ -336,7 +422,7 @@ CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fa
           if (!segment_crosses_face(u, v, cube, a, side, &w)) continue;
           Pert fc = w[static_cast<std::size_t>((a + 2) % 3)];
           fc.c[detail::kD1] -= 1;
-          add_probe(a, side, std::move(fc));
+          add_probe(a, side, Pos::of_pert(std::move(fc)));
         }
     }
   }
@@ -353,31 +439,31 @@ CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fa
     int exit_node = -1;      // otherwise the exit node
   };
   const auto shoot = [&](Vec3 v, int skip) {
-    const Line ray = make_line(0, Pert::shifted(v.y, detail::kD1, 1), Pert::shifted(v.z, detail::kD2, 1));
-    const Pert xmax = plane(cube, 0, 1);
+    const Line ray = make_line(0, Pos::of_double(v.y, detail::kD1, 1), Pos::of_double(v.z, detail::kD2, 1));
+    const Pos xmax = plane_pos(cube, 0, 1), start = Pos::of_double(v.x);
     Shot shot;
-    Pert best_pos;
+    Pos best_pos;
     for (std::size_t i = 0; i < m; ++i) {
       if (sheet[i] == skip) continue;
       const auto& tri = domain.facet_triangles[static_cast<std::size_t>(tris[i])];
-      Pert pos;
+      Pos pos;
       bool entering = false;
       if (!line_hit(ray, domain.plc.vertices[static_cast<std::size_t>(tri[0])], domain.plc.vertices[static_cast<std::size_t>(tri[1])],
                     domain.plc.vertices[static_cast<std::size_t>(tri[2])], pos, entering))
         continue;
-      const int s = side_sign(v.x, pos);  // sign(v.x - pos)
+      const int s = compare(start, pos);  // sign(v.x - pos)
       if (s == 0) throw InternalError("mv3d: a ray starts on the boundary of P");
-      if (s > 0 || detail::compare(pos, xmax) >= 0) continue;
-      if (shot.triangle < 0 || detail::compare(pos, best_pos) < 0) {
+      if (s > 0 || compare(pos, xmax) >= 0) continue;
+      if (shot.triangle < 0 || compare(pos, best_pos) < 0) {
         shot.triangle = static_cast<int>(i);
         shot.entering = entering;
         best_pos = std::move(pos);
       }
     }
     if (shot.triangle >= 0) return shot;
-    const std::size_t p = add_probe(0, 1, Pert::shifted(v.z, detail::kD2, 1));
+    const std::size_t p = add_probe(0, 1, Pos::of_double(v.z, detail::kD2, 1));
     Event exit_node;
-    exit_node.pos = Pert::shifted(v.y, detail::kD1, 1);
+    exit_node.pos = Pos::of_double(v.y, detail::kD1, 1);
     exit_node.node = add_node();
     shot.exit_node = exit_node.node;
     probes[p].nodes.push_back(std::move(exit_node));
@@ -419,25 +505,20 @@ CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fa
   std::vector<Shot> mark_shots;
   for (const Vec3 p : marks) mark_shots.push_back(shoot(p, -1));
 
-  // Step 6: walk the cube edges (status from -infinity by parity over every
-  // triangle), then the probes (status from their start junction).
-  std::vector<int> all(domain.facet_triangles.size());
-  std::iota(all.begin(), all.end(), 0);
-  for (int e = 0; e < 12; ++e) {
-    KLine& kl = edges[static_cast<std::size_t>(e)];
-    const Pert lo = plane(cube, kl.line.d, 0);
-    bool status = false;
-    for (const int t : all) {
-      const auto& tri = domain.facet_triangles[static_cast<std::size_t>(t)];
-      Pert pos;
-      bool entering = false;
-      if (!line_hit(kl.line, domain.plc.vertices[static_cast<std::size_t>(tri[0])], domain.plc.vertices[static_cast<std::size_t>(tri[1])],
-                    domain.plc.vertices[static_cast<std::size_t>(tri[2])], pos, entering))
-        continue;
-      if (detail::compare(pos, lo) < 0) status = !status;
+  // Step 6: walk the cube edges, then the probes (status from their start
+  // junction). Corner 0's status is given (hint); an edge starting at a
+  // corner with j sides at 1 is walked after the edges reaching that corner
+  // (those starting at corners with j - 1 sides at 1), so every walk starts
+  // at a corner of known status.
+  node_in_p[static_cast<std::size_t>(corner[0])] = hint.corner0_in ? 1 : 0;
+  for (int ones = 0; ones < 3; ++ones)
+    for (int e = 0; e < 12; ++e) {
+      if ((e / 2) % 2 + e % 2 != ones) continue;
+      KLine& kl = edges[static_cast<std::size_t>(e)];
+      const signed char s = node_in_p[static_cast<std::size_t>(kl.start)];
+      if (s < 0) throw InternalError("mv3d: a cube edge starts at a corner of unknown status");
+      walk(domain, cube, kl, s == 1, tris, uf, node_in_p);
     }
-    walk(domain, cube, kl, status, tris, uf, node_in_p);
-  }
   for (KLine& kl : probes) {
     const signed char s = node_in_p[static_cast<std::size_t>(kl.start)];
     if (s < 0) throw InternalError("mv3d: a probe starts at an unvisited junction");

@@ -31,8 +31,10 @@
 // ∂C (the 12 cube edges and probe lines through every point where a triangle
 // side crosses a cube face); internal floaters joined by the tether of
 // §4.1.6 (a ray in +x from the shell's largest vertex). Fast path (issue 4
-// item 7): when the facets meeting C share a vertex v lying in C, P ∩ C is
-// star-shaped from v, hence one component.
+// item 7): when the facets meeting C form one cone whose apex meets C (they
+// share a vertex v lying in C; or they are the two facets of the one P edge
+// meeting C; or there is one facet and no edge), P ∩ C is connected
+// (cube_components.cpp, single_cone).
 #include <span>
 #include <utility>
 #include <vector>
@@ -78,16 +80,38 @@ std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube);
 // The same, restricted to candidates (e.g. the parent box's list).
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates);
 
-// Components of P ∩ C. Cost: O(T) to find the meeting triangles (T facet
-// triangles), then, off the fast path, O(m k) for the m triangles meeting C
-// and the k probe lines (k <= 6 x the triangle sides meeting C), plus O(T)
-// per cube edge (the walks from -infinity locate the corners in P). Exact
-// rational arithmetic behind double filters; about 0.4 ms for T ~ 130.
+// What a caller that already knows the neighbourhood of C hands down (issue 4
+// item 7: candidate lists passed down the tree, ex(child) ⊂ ex(parent)), so
+// that no step looks at every facet triangle.
+struct CubeHint {
+  std::span<const int> candidates;  // every facet triangle meeting C_e is among them
+  bool candidates_exact = false;    // they are exactly those triangles, sorted
+  bool corner0_in = false;          // corner 0 of C_e, lo - (e, e^2, e^3), lies in P
+};
+
+// Is corner 0 of C_e in P? By parity along x from -infinity over every
+// facet triangle: O(T), for roots and tests.
+bool corner0_in(const Domain3& domain, const Cube& cube);
+// The same for `inner` ⊂ `outer` (closed boxes), from outer's corner 0 by an
+// axis-parallel walk inside outer's C_e; outer_tris must hold every facet
+// triangle meeting outer's C_e. Cost O(|outer_tris|).
+bool corner0_in_from(const Domain3& domain, const Cube& inner, const Cube& outer, bool outer_corner0_in,
+                     std::span<const int> outer_tris);
+
+// Components of P ∩ C. Cost: O(c) to select the m triangles meeting C among
+// the c candidates, then, off the fast path, O(m k) for the k probe lines
+// (k <= 6 x the triangle sides meeting C); the corners are located by walking
+// the cube edges from corner 0 (status given). The exact arithmetic (GMP
+// rationals) runs only where double filters cannot decide.
 // allow_fast_path = false forces the full computation (tests compare both).
 // marks: points of the closed cube, none on ∂P; each is located in the
 // components (mark_component) by the ray of the tethers (a ray in +x to the
 // first triangle crossed, or to its exit point on ∂C), e.g. the centre of a
-// box inside ex(b) for P ∧ ex(b) when no P face meets the box.
+// box inside ex(b) for P ∧ ex(b) when no P face meets the box; on the fast
+// path by a walk from corner 0.
+CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHint& hint, bool allow_fast_path = true,
+                          std::span<const Vec3> marks = {});
+// The same from scratch (candidates: all T triangles; corner 0 by corner0_in).
 CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fast_path = true,
                           std::span<const Vec3> marks = {});
 

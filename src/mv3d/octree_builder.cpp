@@ -2,6 +2,9 @@
 #include "mv3d/octree_builder.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -38,7 +41,27 @@ bool share(const std::vector<int>& a, const std::vector<int>& b) {
 
 }  // namespace
 
-OctreeBuilder::OctreeBuilder(const Domain3& domain) : domain_(domain), tree_(root_for(domain)) {
+OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
+    : domain_(domain), options_(std::move(options)), tree_(root_for(domain)) {
+  const SizeField3& sf = options_.size_field;
+  if (!std::isfinite(options_.max_size) || options_.max_size < 0)
+    throw InvalidInput(ErrorCode::Syntax, "max size must be a positive finite number (0: none)", {});
+  if (sf.sizes.size() != sf.points.size())
+    throw InvalidInput(ErrorCode::Syntax, "size field: " + std::to_string(sf.points.size()) + " points but " +
+                                                 std::to_string(sf.sizes.size()) + " sizes",
+                       {});
+  for (std::size_t i = 0; i < sf.points.size(); ++i) {
+    const bool finite = std::isfinite(sf.points[i].x) && std::isfinite(sf.points[i].y) && std::isfinite(sf.points[i].z);
+    const bool positive = std::isfinite(sf.sizes[i]) && sf.sizes[i] > 0;
+    if (finite && positive) continue;
+    const int line = i < sf.lines.size() ? sf.lines[i] : 0;
+    std::string where = sf.path.empty() ? "size field" : sf.path;
+    if (line > 0) where += ":" + std::to_string(line);
+    throw InvalidInput(finite ? ErrorCode::Syntax : ErrorCode::NonFinite,
+                       where + ": size field entry " + std::to_string(i) +
+                           (finite ? " has a size that is not a positive finite number" : " has a non-finite point"),
+                       {static_cast<std::int64_t>(i)}, sf.path, line);
+  }
   const Cube nowhere{{1, 1, 1}, {0, 0, 0}};
   vertex_box_.assign(domain.plc.vertices.size(), nowhere);
   facet_vertices_.resize(domain.plc.facets.size());
@@ -90,13 +113,16 @@ void OctreeBuilder::init_root() {
   data_.emplace_back();
   data_.emplace_back();  // kInterior: a cube inside P with no faces and no vertex box
   data_[kInterior].has_component = true;
+  data_[kInterior].cube_corner0_in = data_[kInterior].ex_corner0_in = true;
   const CubeComponents cc = components(domain_, cube(0));
   if (cc.components.size() != 1)
     throw InternalError("mv3d octree: the root cube meets P in " + std::to_string(cc.components.size()) +
                         " components (P is connected and inside it)");
   NodeData3& d = data_[0];
   d.cube_tris = triangles_meeting(domain_, cube(0));
-  d.ex_tris = d.cube_tris;
+  d.ex_tris = d.cube_tris;  // P lies in the root cube, so ex(root) meets the same triangles
+  d.cube_corner0_in = corner0_in(domain_, cube(0));
+  d.ex_corner0_in = corner0_in(domain_, ex_cube(0));
   d.has_component = true;
   d.cube_single = true;
   d.vertices = cc.components[0].vertices;
@@ -121,13 +147,22 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
   std::vector<std::vector<int>> child_tris(OctTree::kChildren);
   std::vector<Vec3> marks;
   std::vector<std::size_t> mark_of(OctTree::kChildren, 0);
+  // Corner 0 of each child's shifted cube and extended box, from the
+  // parent's by walks inside the parent's (ex(child) ⊂ ex(parent)).
+  const Cube pcube = cube(parent), pex = ex_cube(parent);
+  std::array<bool, OctTree::kChildren> corner_in{}, ex_corner_in{};
+  for (int k = 0; k < OctTree::kChildren; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    corner_in[ku] = corner0_in_from(domain_, cube(first_child + k), pcube, pd.cube_corner0_in, pd.cube_tris);
+    ex_corner_in[ku] = corner0_in_from(domain_, ex_cube(first_child + k), pex, pd.ex_corner0_in, pd.ex_tris);
+  }
   if (!interior && pd.has_component) {
     for (int k = 0; k < OctTree::kChildren; ++k) {
       const auto ku = static_cast<std::size_t>(k);
       const Cube c = cube(first_child + k);
       child_tris[ku] = triangles_meeting(domain_, c, pd.cube_tris);
       if (!child_tris[ku].empty()) {
-        child_cc[ku] = components(domain_, c);
+        child_cc[ku] = components(domain_, c, CubeHint{child_tris[ku], true, corner_in[ku]});
         ++stats_.components_split;
         continue;
       }
@@ -140,11 +175,13 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
   CubeComponents parent_cc;
   if (!interior && pd.has_component) {
     if (pd.cube_single) {
+      // A child missing ∂P lies in P iff its corner 0 does.
       parent_cc.components.emplace_back();
-      for (const Vec3& m : marks)
-        parent_cc.mark_component.push_back(pqmesh::locate(domain_, m) == Location::Inside ? 0 : -1);
+      for (int k = 0; k < OctTree::kChildren; ++k)
+        if (child_tris[static_cast<std::size_t>(k)].empty())
+          parent_cc.mark_component.push_back(corner_in[static_cast<std::size_t>(k)] ? 0 : -1);
     } else {
-      parent_cc = components(domain_, cube(parent), true, marks);
+      parent_cc = components(domain_, pcube, CubeHint{pd.cube_tris, true, pd.cube_corner0_in}, true, marks);
       ++stats_.components_split;
     }
   }
@@ -163,6 +200,8 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
     const std::int32_t child = first_child + k;
     NodeData3 cd;
     cd.vertex_owner = pd.vertex_owner;
+    cd.cube_corner0_in = corner_in[static_cast<std::size_t>(k)];
+    cd.ex_corner0_in = ex_corner_in[static_cast<std::size_t>(k)];
     if (!pd.has_component) {  // never split in practice: crowding and balance need a component
       tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
       data_.push_back(std::move(cd));
@@ -222,9 +261,14 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
   }
 }
 
-CubeComponents OctreeBuilder::extended_components(std::int32_t node, std::span<const Vec3> marks) const {
+Cube OctreeBuilder::ex_cube(std::int32_t node) const {
   const auto eb = tree_.extended_box(node);
-  return components(domain_, Cube{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}}, true, marks);
+  return Cube{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}};
+}
+
+CubeComponents OctreeBuilder::extended_components(std::int32_t node, std::span<const Vec3> marks) const {
+  const NodeData3& d = data(node);
+  return components(domain_, ex_cube(node), CubeHint{d.ex_tris, true, d.ex_corner0_in}, true, marks);
 }
 
 int OctreeBuilder::component_in(std::int32_t node, const CubeComponents& ex) const {
@@ -301,6 +345,29 @@ void OctreeBuilder::balance(std::span<const std::int32_t> seeds) {
   current_phase_ = saved;
 }
 
+// f(x) = min(max_size, min_i s_i + |x - p_i|) has its minimum over the cube
+// where each term does: at the point of the cube nearest p_i.
+double OctreeBuilder::size_over(const Cube& c) const {
+  double best = options_.max_size > 0 ? options_.max_size : std::numeric_limits<double>::infinity();
+  const SizeField3& f = options_.size_field;
+  for (std::size_t i = 0; i < f.points.size(); ++i) {
+    const Vec3 p = f.points[i];
+    const double dx = std::max({c.lo.x - p.x, 0.0, p.x - c.hi.x});
+    const double dy = std::max({c.lo.y - p.y, 0.0, p.y - c.hi.y});
+    const double dz = std::max({c.lo.z - p.z, 0.0, p.z - c.hi.z});
+    best = std::min(best, f.sizes[i] + std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+  return best;
+}
+
+// Thesis §1.1: a box meeting P is split while it is larger than the size
+// function asks anywhere in it (phase 0, before the vertex phase, so later
+// phases only refine further and protection never blocks it).
+bool OctreeBuilder::size_crowded(std::int32_t node) const {
+  if (options_.max_size <= 0 && options_.size_field.points.empty()) return false;
+  return tree_.side(node) > size_over(cube(node));
+}
+
 // Thesis §4.1.3 "Vertex crowded": b holds a P vertex v and P ∧ ex(b) has a face
 // that interferes with v (is not v nor a superface of v).
 bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
@@ -370,6 +437,7 @@ void OctreeBuilder::run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std
   std::vector<std::int32_t> work = leaves_by_id();
   std::int64_t& counter = which == OctPhase::Vertex ? stats_.splits_vertex
                           : which == OctPhase::Edge ? stats_.splits_edge
+                          : which == OctPhase::Size ? stats_.splits_size
                                                     : stats_.splits_facet;
   for (std::size_t next = 0; next < work.size(); ++next) {
     const std::int32_t n = work[next];
@@ -459,11 +527,27 @@ void OctreeBuilder::protect_edge_boxes() {
 
 void OctreeBuilder::build() {
   init_root();
+  int phase = 0;
+  auto t0 = std::chrono::steady_clock::now();
+  const auto done = [&] {  // per-phase time and leaf count (OctreeStats)
+    const auto t1 = std::chrono::steady_clock::now();
+    stats_.phase_seconds[phase] = std::chrono::duration<double>(t1 - t0).count();
+    stats_.phase_leaves[phase] = tree_.leaf_count();
+    ++phase;
+    t0 = t1;
+  };
+  run_phase(OctPhase::Size, &OctreeBuilder::size_crowded);
+  done();
   run_phase(OctPhase::Vertex, &OctreeBuilder::vertex_crowded);
+  done();
   center_vertices();
+  done();
   run_phase(OctPhase::Edge, &OctreeBuilder::edge_crowded);
+  done();
   protect_edge_boxes();
+  done();
   run_phase(OctPhase::Facet, &OctreeBuilder::facet_crowded);
+  done();
   for (const std::int32_t n : leaves_by_id()) {
     ++stats_.leaves;
     if (!data(n).has_component) ++stats_.outside_leaves;

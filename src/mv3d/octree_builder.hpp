@@ -31,11 +31,15 @@
 // interferes only if it meets P ∧ b itself (the 2D edge rule). The separating
 // splits of §4.1.4-4.1.5 (split every edge/facet box once before protecting)
 // and the protection of facet boxes (no phase follows) are not done.
-// Cost: dominated by components() (exact, GMP-backed): one per child meeting
-// ∂P per split, one per extended box (cached per node), and one per
-// balance-adjacency query involving a box inside P.
+// Cost: dominated by components() (exact, double filters before GMP): one per
+// child meeting ∂P per split, one per extended box (cached per node), and one
+// per balance-adjacency query involving a box inside P. Each looks only at
+// the candidate triangles handed down the tree (cube_tris, ex_tris) and
+// starts from the status of corner 0 derived from the parent's, so a box
+// costs O(candidates), independent of the number of facet triangles.
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -45,7 +49,23 @@
 
 namespace pqmesh::mv3d {
 
-enum class OctPhase : std::uint8_t { Root, Vertex, Centering, Edge, Facet, Balance };
+enum class OctPhase : std::uint8_t { Root, Vertex, Centering, Edge, Facet, Balance, Size };
+
+// The user size function of thesis §1.1 ("the largest desired box containing
+// that point"), as in 2D (quad2d/size_function.hpp): f(x) = min(max_size,
+// min_i sizes[i] + |x - points[i]|), 1-Lipschitz, so the requested octree is
+// graded. Phase 0 splits a box (meeting P) while its side exceeds the minimum
+// of f over it.
+struct SizeField3 {
+  std::vector<Vec3> points;
+  std::vector<double> sizes;
+  std::vector<int> lines;  // 1-based file line of each point (0: not from a file), for errors
+  std::string path;
+};
+struct OctreeOptions {
+  double max_size = 0;     // largest box side anywhere; 0: no cap
+  SizeField3 size_field;   // empty: none
+};
 
 struct NodeData3 {
   std::vector<int> cube_tris;                // facet triangles meeting the closed cube (all components)
@@ -55,15 +75,26 @@ struct NodeData3 {
   bool has_component = false;                // false: the cube misses P
   bool cube_single = false;                  // P ∩ cube has exactly one component (no duplicates of this cube)
   int vertex_owner = -1;                     // v if this leaf lies in v's united box (§4.1.3)
+  // Corner 0 of the shifted cube / of the shifted ex(b) lies in P
+  // (cube_components.hpp): with cube_tris / ex_tris, all that components()
+  // needs, so no call looks at every facet triangle (issue 4 item 7).
+  bool cube_corner0_in = false, ex_corner0_in = false;
 };
 
 struct OctreeStats {
+  std::int64_t splits_size = 0;
   std::int64_t splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0, splits_balance = 0;
   std::int64_t duplicates = 0;
   std::int64_t leaves = 0, outside_leaves = 0, vertex_boxes = 0;
   // components() calls (the dominant cost): for children and parents at a
   // split, for cached extended boxes, for uncached balance-adjacency queries.
   std::int64_t components_split = 0, components_extended = 0, components_adjacency = 0;
+  // Per phase of build(), in order size, vertex, centering, edge, protect,
+  // facet: wall seconds, and leaves (all duplicates counted) when it ends.
+  static constexpr int kPhases = 6;
+  static constexpr const char* kPhaseNames[kPhases] = {"size", "vertex", "centering", "edge", "protect", "facet"};
+  double phase_seconds[kPhases] = {0, 0, 0, 0, 0, 0};
+  std::int64_t phase_leaves[kPhases] = {0, 0, 0, 0, 0, 0};
 };
 
 // The faces of P ∧ ex(b) (§4.1.1 "Extended Box").
@@ -73,7 +104,10 @@ struct ExtendedFaces3 {
 
 class OctreeBuilder {
  public:
-  explicit OctreeBuilder(const Domain3& domain);
+  // Throws InvalidInput for a negative or non-finite max_size and for a size
+  // field entry with a non-finite point or a size that is not positive and
+  // finite (naming the entry and its file line).
+  explicit OctreeBuilder(const Domain3& domain, OctreeOptions options = {});
   void build();
 
   const OctTree& tree() const { return tree_; }
@@ -81,6 +115,7 @@ class OctreeBuilder {
   const OctreeStats& stats() const { return stats_; }
   const NodeData3& data(std::int32_t node) const { return data_[static_cast<std::size_t>(tree_.payload(node))]; }
   Cube cube(std::int32_t node) const;
+  Cube ex_cube(std::int32_t node) const;  // ex(b), thesis §4.1.1
   std::vector<std::int32_t> leaves_by_id() const;
   // The united box of vertex v (2x2x2 block, §4.1.3); lo > hi if v was not centred.
   const Cube& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }
@@ -104,6 +139,8 @@ class OctreeBuilder {
   // changes); the centre of the node is mark 0 when P ∧ node is the whole cube.
   const CubeComponents& cached_extended(std::int32_t node) const;
 
+  bool size_crowded(std::int32_t node) const;
+  double size_over(const Cube& c) const;  // min of the size function over the closed cube
   bool vertex_crowded(std::int32_t node) const;
   bool edge_crowded(std::int32_t node) const;
   bool facet_crowded(std::int32_t node) const;
@@ -114,6 +151,7 @@ class OctreeBuilder {
   bool facet_has_vertex(int facet, int v) const;
 
   const Domain3& domain_;
+  OctreeOptions options_;
   OctTree tree_;
   mutable OctreeStats stats_;  // mutable: const queries count their components() calls
   std::vector<NodeData3> data_;

@@ -43,25 +43,91 @@ void bracket_one(const mpq_class& c0, double& lo, double& hi) {
 
 }  // namespace
 
-Line make_line(int d, Pert f1, Pert f2) {
+Line make_line(int d, Pos f1, Pos f2) {
   Line l{d, std::move(f1), std::move(f2), {}, {}};
-  bracket_one(l.f1.c[0], l.lo[0], l.hi[0]);
-  bracket_one(l.f2.c[0], l.lo[1], l.hi[1]);
+  l.lo = {l.f1.lo, l.f2.lo};
+  l.hi = {l.f1.hi, l.f2.hi};
   return l;
+}
+
+Pos Pos::of_pert(Pert v) {
+  Pos p;
+  bracket_one(v.c[0], p.lo, p.hi);
+  p.exact = std::move(v);
+  return p;
+}
+
+namespace {
+
+// The exact crossing of line l with the plane of triangle abc (not parallel).
+Pert crossing(const Line& l, Vec3 a, Vec3 b, Vec3 c) {
+  const int o1 = (l.d + 1) % 3, o2 = (l.d + 2) % 3;
+  const mpq_class bx = q(b.x) - q(a.x), by = q(b.y) - q(a.y), bz = q(b.z) - q(a.z);
+  const mpq_class cx = q(c.x) - q(a.x), cy = q(c.y) - q(a.y), cz = q(c.z) - q(a.z);
+  const std::array<mpq_class, 3> n{by * cz - bz * cy, bz * cx - bx * cz, bx * cy - by * cx};
+  // n . (p - a) = 0  =>  p_d = a_d - (n_o1 (f1 - a_o1) + n_o2 (f2 - a_o2)) / n_d
+  const mpq_class inv = mpq_class(-1) / n[static_cast<std::size_t>(l.d)];
+  const mpq_class m1 = n[static_cast<std::size_t>(o1)] * inv, m2 = n[static_cast<std::size_t>(o2)] * inv;
+  const Pert& f1 = l.f1.value();
+  const Pert& f2 = l.f2.value();
+  // Coefficient by coefficient (no Pert temporaries).
+  Pert pos;
+  pos.c[0] = (f1.c[0] - q(at(a, o1))) * m1 + (f2.c[0] - q(at(a, o2))) * m2 + q(at(a, l.d));
+  for (std::size_t k = 1; k < pos.c.size(); ++k) {
+    if (sgn(f1.c[k]) != 0) pos.c[k] += f1.c[k] * m1;
+    if (sgn(f2.c[k]) != 0) pos.c[k] += f2.c[k] * m2;
+  }
+  return pos;
+}
+
+// Coefficients of a plane-kind Pos (a double plus s * term) without GMP.
+bool simple(const Pos& p) { return !p.exact && p.line == nullptr && p.lo == p.hi; }
+
+}  // namespace
+
+const Pert& Pos::value() const {
+  if (!exact) {
+    if (line) exact = crossing(*line, a, b, c);
+    else exact = term >= 0 ? Pert::shifted(lo, term, sgn) : Pert::constant(lo);
+  }
+  return *exact;
+}
+
+int compare(const Pos& x, const Pos& y) {
+  if (x.hi < y.lo) return -1;
+  if (x.lo > y.hi) return 1;
+  if (simple(x) && simple(y)) {
+    // x - y = (x0 - y0) + sx e^tx - sy e^ty
+    if (x.lo != y.lo) return x.lo < y.lo ? -1 : 1;
+    std::array<int, 6> d{};
+    if (x.term >= 0) d[static_cast<std::size_t>(x.term)] += x.sgn;
+    if (y.term >= 0) d[static_cast<std::size_t>(y.term)] -= y.sgn;
+    for (const int v : d)
+      if (v != 0) return v > 0 ? 1 : -1;
+    return 0;
+  }
+  return detail::compare(x.value(), y.value());
+}
+
+Pos plane_pos(const Cube& c, int axis, int side) {
+  return side == 0 ? Pos::of_double(lo_of(c, axis), detail::kE1 + axis, -1)
+                   : Pos::of_double(hi_of(c, axis), detail::kE1 + axis, 1);
 }
 
 // Does the line cross the closed triangle abc (oriented outward)? The line is
 // generic (file comment), so it crosses the plane in one point (or is
 // parallel to it) and the point is strictly inside or strictly outside the
 // triangle. pos: coordinate along d; entering: moving in +d enters P.
-bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pert& pos, bool& entering) {
+bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
   const int o1 = (l.d + 1) % 3, o2 = (l.d + 2) % 3;
   // Filter: a fixed coordinate whose constant part lies strictly outside the
   // triangle's range misses it whatever the infinitesimals.
   const double mn1 = std::min({at(a, o1), at(b, o1), at(c, o1)}), mx1 = std::max({at(a, o1), at(b, o1), at(c, o1)});
   const double mn2 = std::min({at(a, o2), at(b, o2), at(c, o2)}), mx2 = std::max({at(a, o2), at(b, o2), at(c, o2)});
   if (l.hi[0] < mn1 || l.lo[0] > mx1 || l.hi[1] < mn2 || l.lo[1] > mx2) return false;  // brackets: exact
-  if (cmp(l.f1.c[0], mn1) < 0 || cmp(l.f1.c[0], mx1) > 0 || cmp(l.f2.c[0], mn2) < 0 || cmp(l.f2.c[0], mx2) > 0)
+  // Brackets straddling a bound (non-double constant parts): decide exactly.
+  if ((l.lo[0] < mn1 && cmp(l.f1.value().c[0], mn1) < 0) || (l.hi[0] > mx1 && cmp(l.f1.value().c[0], mx1) > 0) ||
+      (l.lo[1] < mn2 && cmp(l.f2.value().c[0], mn2) < 0) || (l.hi[1] > mx2 && cmp(l.f2.value().c[0], mx2) > 0))
     return false;
   // sign of the normal's d component: orient2d of the projection dropping d,
   // whose axes are (o1, o2) in this cyclic order (predicates.hpp).
@@ -86,22 +152,67 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pert& pos, bool& entering) 
       if (corner_sign != nd) return false;
       continue;
     }
-    // orient2d(u, v, P) = (v1 - u1)(P2 - u2) - (v2 - u2)(P1 - u1), affine in P.
-    const Pert s = (l.f2 - Pert::constant(at(u, o2))) * (q(at(v, o1)) - q(at(u, o1))) -
-                   (l.f1 - Pert::constant(at(u, o1))) * (q(at(v, o2)) - q(at(u, o2)));
-    const int sg = s.sign();
+    // orient2d(u, v, P) = (v1 - u1)(P2 - u2) - (v2 - u2)(P1 - u1), affine in P:
+    // its sign is that of the first non-zero coefficient.
+    const Pert& f1 = l.f1.value();
+    const Pert& f2 = l.f2.value();
+    const mpq_class b1 = q(at(v, o1)) - q(at(u, o1)), b2 = q(at(v, o2)) - q(at(u, o2));
+    int sg = sgn((f2.c[0] - q(at(u, o2))) * b1 - (f1.c[0] - q(at(u, o1))) * b2);
+    for (std::size_t k = 1; k < f1.c.size() && sg == 0; ++k) {
+      if (sgn(f1.c[k]) == 0 && sgn(f2.c[k]) == 0) continue;
+      sg = sgn(f2.c[k] * b1 - f1.c[k] * b2);
+    }
+    sg = sg > 0 ? 1 : (sg < 0 ? -1 : 0);
     if (sg == 0) throw InternalError("mv3d: a probe line passes through a triangle side");
     if (sg != nd) return false;
   }
-  const mpq_class bx = q(b.x) - q(a.x), by = q(b.y) - q(a.y), bz = q(b.z) - q(a.z);
-  const mpq_class cx = q(c.x) - q(a.x), cy = q(c.y) - q(a.y), cz = q(c.z) - q(a.z);
-  const std::array<mpq_class, 3> n{by * cz - bz * cy, bz * cx - bx * cz, bx * cy - by * cx};
-  // n . (p - a) = 0  =>  p_d = a_d - (n_o1 (f1 - a_o1) + n_o2 (f2 - a_o2)) / n_d
-  const mpq_class inv = mpq_class(-1) / n[static_cast<std::size_t>(l.d)];
-  pos = (l.f1 - Pert::constant(at(a, o1))) * (n[static_cast<std::size_t>(o1)] * inv) +
-        (l.f2 - Pert::constant(at(a, o2))) * (n[static_cast<std::size_t>(o2)] * inv);
-  pos.c[0] += q(at(a, l.d));
   entering = nd < 0;
+  pos = Pos{};
+  pos.line = &l;
+  pos.a = a;
+  pos.b = b;
+  pos.c = c;
+  // Bracket of the constant part p0 of the crossing: a double estimate
+  // +- delta, each end checked exactly. With X = (t, f1, f2) in axes
+  // (d, o1, o2), n . (X - a) = n_d (t - p0), and n . (X - a) has the sign of
+  // orient3d(a, b, c, X); it is affine in (f1, f2), so one sign at the four
+  // corners of their brackets holds for their constant parts.
+  const auto point = [&](double td, double t1, double t2) {
+    Vec3 x{};
+    (l.d == 0 ? x.x : l.d == 1 ? x.y : x.z) = td;
+    (o1 == 0 ? x.x : o1 == 1 ? x.y : x.z) = t1;
+    (o2 == 0 ? x.x : o2 == 1 ? x.y : x.z) = t2;
+    return x;
+  };
+  const bool point_line = l.lo[0] == l.hi[0] && l.lo[1] == l.hi[1];  // exact double fixed coordinates
+  const auto below_or_above = [&](double td) {  // sign(td - p0) if one on the bracket box, else 0
+    int s = 0;
+    for (int k = 0; k < (point_line ? 1 : 4); ++k) {
+      const double t1 = (k & 1) ? l.hi[0] : l.lo[0], t2 = (k & 2) ? l.hi[1] : l.lo[1];
+      const int g = static_cast<int>(orient3d(a, b, c, point(td, t1, t2))) * nd;
+      if (g == 0 || (s != 0 && g != s)) return 0;
+      s = g;
+    }
+    return s;
+  };
+  const Vec3 ab = b - a, ac = c - a;
+  const double n[3] = {ab.y * ac.z - ab.z * ac.y, ab.z * ac.x - ab.x * ac.z, ab.x * ac.y - ab.y * ac.x};
+  const double f1 = 0.5 * (l.lo[0] + l.hi[0]), f2 = 0.5 * (l.lo[1] + l.hi[1]);
+  const double nd_d = n[l.d];
+  pos.lo = -HUGE_VAL;
+  pos.hi = HUGE_VAL;
+  if (at(a, l.d) == at(b, l.d) && at(a, l.d) == at(c, l.d)) {  // the plane x_d = a_d: p0 = a_d exactly
+    pos.lo = pos.hi = at(a, l.d);
+  } else if (nd_d != 0) {
+    const double est = at(a, l.d) - (n[o1] * (f1 - at(a, o1)) + n[o2] * (f2 - at(a, o2))) / nd_d;
+    double scale = std::fabs(est) + std::fabs(f1) + std::fabs(f2);
+    for (const Vec3 p : {a, b, c}) scale += std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z);
+    const double delta = std::max(1e-9 * scale, 1e-300);
+    if (std::isfinite(est) && std::isfinite(delta) && below_or_above(est - delta) < 0 && below_or_above(est + delta) > 0) {
+      pos.lo = est - delta;
+      pos.hi = est + delta;
+    }
+  }
   return true;
 }
 
@@ -118,6 +229,41 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
     if (j == axis) continue;
     if ((at(u, j) < lo_of(c, j) && at(v, j) < lo_of(c, j)) || (at(u, j) > hi_of(c, j) && at(v, j) > hi_of(c, j)))
       return false;
+  }
+  // Exact filter on the constant part x0 of the crossing's coordinate j:
+  // (x0 - L)(v_a - u_a) = -orient2d((u_a, u_j), (v_a, v_j), (A, L)) for the
+  // face plane A; a non-zero sign decides x against L -+ e^(j+1).
+  {
+    const double plane_a = side == 1 ? hi_of(c, axis) : lo_of(c, axis);
+    const int sa = at(v, axis) > at(u, axis) ? 1 : -1;  // the straddle makes them differ
+    bool decided = true;
+    for (int j = 0; j < 3; ++j) {
+      if (j == axis) continue;
+      const Vec2 u2{at(u, axis), at(u, j)}, v2{at(v, axis), at(v, j)};
+      const int sl = -static_cast<int>(orient2d(u2, v2, {plane_a, lo_of(c, j)})) * sa;
+      const int sh = -static_cast<int>(orient2d(u2, v2, {plane_a, hi_of(c, j)})) * sa;
+      if (sl < 0 || sh > 0) return false;
+      if (sl == 0 || sh == 0) decided = false;
+    }
+    if (decided) {
+      if (w) {
+        // The crossing u + t (v - u) at x_axis = A -+ e^(axis+1): coordinate j
+        // is u_j + (A - u_a) r -+ r e^(axis+1), r = (v_j - u_j) / (v_a - u_a).
+        const mpq_class den = q(at(v, axis)) - q(at(u, axis)), off = q(plane_a) - q(at(u, axis));
+        for (int j = 0; j < 3; ++j) {
+          Pert& x = (*w)[static_cast<std::size_t>(j)];
+          if (j == axis) {
+            x = plane(c, axis, side);
+            continue;
+          }
+          const mpq_class r = (q(at(v, j)) - q(at(u, j))) / den;
+          x = Pert{};
+          x.c[0] = q(at(u, j)) + off * r;
+          x.c[static_cast<std::size_t>(detail::kE1 + axis)] = side == 1 ? mpq_class(r) : mpq_class(-r);
+        }
+      }
+      return true;
+    }
   }
   const Pert a = plane(c, axis, side);
   std::array<Pert, 3> p;
@@ -151,7 +297,7 @@ bool segment_meets(Vec3 u, Vec3 v, const Cube& c) {
 // s2 on axis (d+2)%3.
 Line cube_edge_line(const Cube& c, int e) {
   const int d = e / 4, s1 = (e / 2) % 2, s2 = e % 2;
-  return make_line(d, plane(c, (d + 1) % 3, s1), plane(c, (d + 2) % 3, s2));
+  return make_line(d, plane_pos(c, (d + 1) % 3, s1), plane_pos(c, (d + 2) % 3, s2));
 }
 
 // Corner id: bit k = side on axis k. The start (side 0 along d) or end of edge e.
@@ -178,12 +324,41 @@ bool triangle_meets(const Domain3& dom, int t, const Cube& c, const std::array<L
                                  nullptr))
           return true;
   for (const Line& l : edge_lines) {
-    Pert pos;
+    Pos pos;
     bool entering = false;
     if (!line_hit(l, a, b, p, pos, entering)) continue;
-    if (detail::compare(pos, plane(c, l.d, 0)) > 0 && detail::compare(pos, plane(c, l.d, 1)) < 0) return true;
+    if (compare(pos, plane_pos(c, l.d, 0)) > 0 && compare(pos, plane_pos(c, l.d, 1)) < 0) return true;
   }
   return false;
+}
+
+PPoint corner_point(const Cube& c, int k) {
+  return {plane_pos(c, 0, k & 1), plane_pos(c, 1, (k >> 1) & 1), plane_pos(c, 2, (k >> 2) & 1)};
+}
+
+bool walk_status(const Domain3& dom, std::span<const int> tris, const PPoint& from, bool from_in, const PPoint& to) {
+  bool in = from_in;
+  PPoint cur = from;
+  for (int d = 0; d < 3; ++d) {
+    const auto du = static_cast<std::size_t>(d);
+    if (compare(cur[du], to[du]) == 0) continue;
+    const Line l = make_line(d, cur[static_cast<std::size_t>((d + 1) % 3)], cur[static_cast<std::size_t>((d + 2) % 3)]);
+    Pos s = cur[du], t = to[du];
+    if (compare(s, t) > 0) std::swap(s, t);
+    for (const int ti : tris) {
+      const auto& tri = dom.facet_triangles[static_cast<std::size_t>(ti)];
+      Pos pos;
+      bool entering = false;
+      if (!line_hit(l, dom.plc.vertices[static_cast<std::size_t>(tri[0])], dom.plc.vertices[static_cast<std::size_t>(tri[1])],
+                    dom.plc.vertices[static_cast<std::size_t>(tri[2])], pos, entering))
+        continue;
+      const int r1 = compare(pos, s), r2 = compare(pos, t);
+      if (r1 == 0 || r2 == 0) throw InternalError("mv3d: a status walk passes through the boundary of P at a path vertex");
+      if (r1 > 0 && r2 < 0) in = !in;
+    }
+    cur[du] = to[du];
+  }
+  return in;
 }
 
 }  // namespace pqmesh::mv3d::detail

@@ -1,10 +1,8 @@
 #include "tet3d/empty_boxes.hpp"
 
-#include <string>
-#include <unordered_map>
+#include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "pqmesh/errors.hpp"
 #include "tet3d/box_faces.hpp"
 
 namespace pqmesh::tet3d {
@@ -49,39 +47,25 @@ std::vector<std::int32_t> empty_leaves(const mv3d::OctreeBuilder& builder, bool 
   return out;
 }
 
-EmptyBoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves) {
-  return mesh_empty_boxes(builder.tree(), CornerSet(builder), leaves);
+namespace {
+
+BoxMesh mesh_as_empty(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                      std::span<const std::int32_t> leaves) {
+  std::vector<BoxJob> jobs;
+  jobs.reserve(leaves.size());
+  for (const std::int32_t n : leaves) jobs.push_back({n, -1});
+  return mesh_boxes(tree, corners, domain, jobs);
 }
 
-EmptyBoxMesh mesh_empty_boxes(const OctTree& tree, const CornerSet& corners, std::span<const std::int32_t> leaves) {
-  EmptyBoxMesh out;
-  std::unordered_map<GridPoint, int, GridPointHash> ids;
-  auto vertex = [&](const GridPoint& p) {
-    const auto [it, fresh] = ids.try_emplace(p, static_cast<int>(out.keys.size()));
-    if (fresh) {
-      out.keys.push_back(p);
-      out.mesh.vertices.push_back(grid_coordinates(tree, p));
-    }
-    return it->second;
-  };
-  std::vector<GridTriangle> tris;
-  for (const std::int32_t n : leaves) {
-    if (!tree.is_leaf(n)) throw InternalError("tet3d: node " + std::to_string(n) + " is not a leaf");
-    const BoxKey<3>& key = tree.key(n);
-    tris.clear();
-    for (int axis = 0; axis < 3; ++axis)
-      for (const bool upper : {false, true}) triangulate_box_face(key, axis, upper, corners, tris);
-    const int c = vertex(key_centre(key));
-    for (const GridTriangle& t : tris) {
-      // t's normal points out of the box and the centre lies inside, so the
-      // reversed triangle followed by the centre has positive volume (mesh.hpp).
-      const int a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
-      out.mesh.tetrahedra.push_back({a, d, b, c});
-      out.tet_leaf.push_back(n);
-    }
-  }
-  out.mesh.tetrahedron_markers.assign(out.mesh.tetrahedra.size(), 0);
-  return out;
+}  // namespace
+
+BoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves) {
+  return mesh_as_empty(builder.tree(), CornerSet(builder), builder.domain(), leaves);
+}
+
+BoxMesh mesh_empty_boxes(const OctTree& tree, const CornerSet& corners, std::span<const std::int32_t> leaves) {
+  // Empty boxes never consult the domain (only facet boxes do).
+  return mesh_as_empty(tree, corners, Domain3{}, leaves);
 }
 
 }  // namespace pqmesh::tet3d

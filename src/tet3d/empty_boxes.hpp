@@ -9,17 +9,17 @@
 // tetrahedra of all empty boxes meet face to face.
 //
 // Vertices are identified by their GridPoint (box corner, face centre, box
-// centre), never by coordinates; vertex ids are assigned in order of first
-// use while leaves are visited in the given order, faces in the order
-// (axis 0..2) x (lower, upper) and triangles in ring order, so the output
-// is a deterministic function of the octree and the leaf list.
+// centre; a VertexKey of kind Grid), never by coordinates; vertex ids are
+// assigned in order of first use while leaves are visited in the given
+// order, faces in the order (axis 0..2) x (lower, upper) and triangles in
+// ring order, so the output is a deterministic function of the octree and the leaf list.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "mv3d/octree_builder.hpp"
-#include "pqmesh/mesh.hpp"
 #include "tet3d/box_faces.hpp"
+#include "tet3d/facet_boxes.hpp"
 #include "tet3d/grid_point.hpp"
 
 namespace pqmesh::tet3d {
@@ -40,18 +40,14 @@ bool is_flush_inside(const mv3d::OctreeBuilder& builder, std::int32_t n);
 // (flush = true) or is_empty_inside (flush = false).
 std::vector<std::int32_t> empty_leaves(const mv3d::OctreeBuilder& builder, bool flush);
 
-struct EmptyBoxMesh {
-  TetMesh3 mesh;                  // region attribute 0 on every tetrahedron; no boundary faces listed
-  std::vector<GridPoint> keys;    // the defining grid point of every vertex
-  std::vector<std::int32_t> tet_leaf;  // the leaf of every tetrahedron
-};
-
-// Tetrahedralizes the given leaves (each must be an aligned leaf; the caller
-// is responsible for them being empty in the sense above). Face splits use
-// the corners of every leaf meeting P (box_faces.hpp CornerSet).
-EmptyBoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves);
+// Tetrahedralizes the given leaves as empty boxes: mesh_boxes
+// (facet_boxes.hpp) with every job an empty box (facet -1), so the vertex
+// keys are all VertexKind::Grid. Each leaf must be an aligned leaf; the caller
+// is responsible for them being empty in the sense above. Face splits use the
+// corners of every leaf meeting P (box_faces.hpp CornerSet).
+BoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves);
 // The same on a bare tree with an explicit corner set (tests, and callers that
 // mesh a tree without a domain).
-EmptyBoxMesh mesh_empty_boxes(const OctTree& tree, const CornerSet& corners, std::span<const std::int32_t> leaves);
+BoxMesh mesh_empty_boxes(const OctTree& tree, const CornerSet& corners, std::span<const std::int32_t> leaves);
 
 }  // namespace pqmesh::tet3d

@@ -56,12 +56,18 @@ class Assembler {
         if (!upper)
           for (std::size_t i = first; i < tris.size(); ++i) std::swap(tris[i][1], tris[i][2]);
       }
-    // Edges of face triangles on F: the boundary of the polygon F ∩ b.
-    std::set<std::pair<int, int>> chord;
+    // Edges of face triangles on F: the boundary of the polygon F ∩ b, keyed
+    // by (smaller id, larger id), each kept with the direction a -> b it has
+    // in its face triangle. Every such edge lies on the face triangles' side
+    // of one box face, so it is in exactly one of them (the part of a face
+    // beyond F yields no triangles).
+    std::map<std::pair<int, int>, std::pair<int, int>> chord;
     for (const Tri& t : tris)
       for (int i = 0; i < 3; ++i) {
         const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-        if (on_facet(a, plane) && on_facet(b, plane)) chord.insert({std::min(a, b), std::max(a, b)});
+        if (!on_facet(a, plane) || !on_facet(b, plane)) continue;
+        if (!chord.emplace(std::pair{std::min(a, b), std::max(a, b)}, std::pair{a, b}).second)
+          throw InternalError("tet3d: edge on F in two face triangles of leaf " + std::to_string(leaf));
       }
     const GridPoint centre = key_centre(key);
     const Vec3 C = grid_coordinates(tree_, centre);
@@ -71,13 +77,17 @@ class Assembler {
       const int v = centre_vertex(centre);
       for (const Tri& t : tris) cone(leaf, t, v);
       std::set<int> poly;
-      for (const auto& [a, b] : chord) poly.insert({a, b});
+      for (const auto& [edge, directed] : chord) poly.insert({edge.first, edge.second});
       Vec3 mean;
       for (const int p : poly) mean = mean + book_.point(p);
       mean = (1.0 / static_cast<double>(poly.size())) * mean;
       const VertexKey gk{VertexKind::FacetCentre, centre, {}, facet};
       const int g = book_.id(gk, [&] { return plane.settle(mean, dominant_axis(plane.normal())); });
-      for (const auto& [a, b] : chord) tet(leaf, a, b, g, v);
+      // Fan of F ∩ b from g, coned to v. P ∧ b is convex and bounded by the
+      // outward face triangles and F ∩ b, so edge a -> b of a face triangle
+      // runs b -> a in F ∩ b oriented outward (away from v): (b, a, g) is an
+      // outward triangle with v inside, hence (a, b, g, v) is positive.
+      for (const auto& [edge, directed] : chord) tet(leaf, "fan", directed.first, directed.second, g, v);
       ++out_.stats.inside;
     } else if (d < h / 4) {
       const VertexKey vk{VertexKind::BoxOnFacet, centre, {}, facet};
@@ -117,26 +127,23 @@ class Assembler {
     return k.kind == VertexKind::Grid && plane.side(book_.point(id)) == Sign::Zero;
   }
 
-  // The cone from an apex inside the box over a face triangle with outward
-  // normal: positive by construction; a non-positive sign (a warp that bent
-  // the face past the apex) throws.
-  void cone(std::int32_t leaf, const Tri& t, int apex) {
-    const Sign s = orient3d(book_.point(t[0]), book_.point(t[2]), book_.point(t[1]), book_.point(apex));
+  // Appends (a, b, c, d), positively oriented by construction (mesh.hpp: d
+  // on the side of the right-hand normal of (a, b, c)). Exact orient3d on the
+  // final (rounded or warped) coordinates must agree; a flat or inverted
+  // tetrahedron is a bug (or a warp that bent a face past the apex) and
+  // throws naming the leaf, never flipped (ALGORITHM.md §12.2, rule 3).
+  void tet(std::int32_t leaf, const char* what, int a, int b, int c, int d) {
+    const Sign s = orient3d(book_.point(a), book_.point(b), book_.point(c), book_.point(d));
     if (s != Sign::Positive)
-      throw InternalError("tet3d: cone tetrahedron of leaf " + std::to_string(leaf) + " is " +
+      throw InternalError(std::string("tet3d: ") + what + " tetrahedron of leaf " + std::to_string(leaf) + " is " +
                           (s == Sign::Zero ? "flat" : "inverted"));
-    out_.mesh.tetrahedra.push_back({t[0], t[2], t[1], apex});
+    out_.mesh.tetrahedra.push_back({a, b, c, d});
     out_.tet_leaf.push_back(leaf);
   }
 
-  // Appends the tetrahedron, positively oriented (exact orient3d); used where
-  // the construction does not fix the orientation (fan of F ∩ b, prisms).
-  void tet(std::int32_t leaf, int a, int b, int c, int d) {
-    const Sign s = orient3d(book_.point(a), book_.point(b), book_.point(c), book_.point(d));
-    if (s == Sign::Zero) throw InternalError("tet3d: flat tetrahedron in leaf " + std::to_string(leaf));
-    out_.mesh.tetrahedra.push_back(s == Sign::Positive ? std::array<int, 4>{a, b, c, d} : std::array<int, 4>{b, a, c, d});
-    out_.tet_leaf.push_back(leaf);
-  }
+  // The cone from an apex inside the box over a face triangle with outward
+  // normal: the reversed triangle followed by the apex is positive.
+  void cone(std::int32_t leaf, const Tri& t, int apex) { tet(leaf, "cone", t[0], t[2], t[1], apex); }
 
   bool key_less(int a, int b) const { return book_.key(a) < book_.key(b); }
 
@@ -151,7 +158,13 @@ class Assembler {
   }
 
   // §4.5.4 third case: the cone from the centre (beyond F) over face triangle
-  // t, clipped by F.
+  // t, clipped by F. Orientations by construction: t is outward, so every
+  // other prism vertex is on its inner side; top[i] lies on the segment from
+  // t[i] towards the centre, so the top triangle in index order is a shrunk
+  // copy of t (same normal, pointing from the top towards t), and a side
+  // (t[i], t[j], top[j], top[i]) with j = i + 1 lies in the plane of the
+  // centre, t[i] and t[j], its right-hand normal pointing into the prism
+  // (edge t[i] -> t[j] runs the other way in the outward surface).
   void prism(std::int32_t leaf, const Tri& t, const GridPoint& centre, Vec3 C, const FacetPlane& plane) {
     std::array<int, 3> top{};
     int shared = 0;
@@ -171,14 +184,16 @@ class Assembler {
     if (shared == 3) throw InternalError("tet3d: face triangle lies on F in leaf " + std::to_string(leaf));
     if (shared == 2) {
       for (std::size_t i = 0; i < 3; ++i)
-        if (top[i] != t[i]) tet(leaf, t[0], t[1], t[2], top[i]);
+        if (top[i] != t[i]) cone(leaf, t, top[i]);
       return;
     }
     if (shared == 1) {
       std::size_t s = 0;
       while (top[s] != t[s]) ++s;
       const int apex = t[s], b1 = t[(s + 1) % 3], b2 = t[(s + 2) % 3];
-      for (const Tri& q : split_quad(b1, b2, top[(s + 2) % 3], top[(s + 1) % 3])) tet(leaf, apex, q[0], q[1], q[2]);
+      // The side quad's triangles have inward normals and apex on their inner side.
+      for (const Tri& q : split_quad(b1, b2, top[(s + 2) % 3], top[(s + 1) % 3]))
+        tet(leaf, "prism", q[0], q[1], q[2], apex);
       return;
     }
     // Full prism: the smallest of its six vertices is the apex of the two
@@ -193,9 +208,13 @@ class Assembler {
     // The minimum vertex and the whole triangle (top or bottom) it is not in.
     const int apex = all[m];
     const int o0 = bottom ? top[i0] : t[i0], o1 = bottom ? top[i1] : t[i1], o2 = bottom ? top[i2] : t[i2];
-    tet(leaf, apex, o0, o1, o2);
-    // Remaining pyramid: apex over the quad t[i1] t[i2] top[i2] top[i1].
-    for (const Tri& q : split_quad(t[i1], t[i2], top[i2], top[i1])) tet(leaf, apex, q[0], q[1], q[2]);
+    // The top's normal points towards the bottom, t's away from the top.
+    if (bottom)
+      tet(leaf, "prism", o0, o1, o2, apex);
+    else
+      tet(leaf, "prism", o0, o2, o1, apex);
+    // Remaining pyramid: apex over the side quad t[i1] t[i2] top[i2] top[i1].
+    for (const Tri& q : split_quad(t[i1], t[i2], top[i2], top[i1])) tet(leaf, "prism", q[0], q[1], q[2], apex);
   }
 
   const OctTree& tree_;

@@ -20,12 +20,10 @@
 //              one total order never form the cyclic pattern of a Schönhardt
 //              prism, so the three tetrahedra always exist (the prism's
 //              smallest vertex sees both quads through it by diagonals).
-// Cone tetrahedra (apex inside the box over an outward face triangle) must
-// come out positive under exact orient3d on the final (rounded or warped)
-// coordinates, else InternalError naming the leaf. The tetrahedra of the
-// F ∩ b fan and of prisms are oriented by orient3d (zero throws). Known
-// weakness: an inverted one of those is flipped rather than reported; the
-// tests' face-side checks catch the resulting overlap.
+// Every tetrahedron (cones, the F ∩ b fan, prism pieces) is written in the
+// vertex order that the construction makes positive (facet_boxes.cpp states
+// why for each); exact orient3d on the final (rounded or warped) coordinates
+// must agree, else InternalError naming the leaf. Nothing is flipped.
 #include <cstdint>
 #include <span>
 #include <vector>

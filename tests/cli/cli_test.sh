@@ -174,6 +174,18 @@ if /usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); sys.ex
 expect 2 "octree of a 2D input" -- "$pqmesh" octree "$data/2d/square.poly" -o "$work/never_octree.vtu"
 expect 64 "octree without -o" -- "$pqmesh" octree "$data/3d/cube.poly"
 if [[ ! -e $work/never_octree.vtu ]]; then ok; else fail "refused octree run left a file"; fi
+# Size control (issue 4 item 5): --max-size and a 3D size field (x y z size).
+expect 0 "octree cube --max-size" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes_h.vtu" --max-size 0.125
+contains "$work/out" "^splits     size [1-9]" "octree --max-size splits in the size phase"
+contains "$work/out" "^phases" "octree summary has the per-phase line"
+printf '# x y z size\n0.5 0.5 0.9 0.01\n' > "$work/field3.txt"
+expect 0 "octree cube --size-field" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes_f.vtu" --size-field "$work/field3.txt"
+contains "$work/out" "^splits     size [1-9]" "octree --size-field splits in the size phase"
+printf '0.5 0.5 0.01\n' > "$work/field3_short.txt"
+expect 2 "octree with a 2D size field" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/never_octree_f.vtu" --size-field "$work/field3_short.txt"
+contains "$work/err" "field3_short.txt:1: " "bad 3D size field names its line"
+expect 64 "octree --max-size 0" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/never_octree_h.vtu" --max-size 0
+if [[ ! -e $work/never_octree_f.vtu && ! -e $work/never_octree_h.vtu ]]; then ok; else fail "refused octree size runs left a file"; fi
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -45,7 +45,7 @@ TEST(BoxFaces, SingleCubeIsCoupledFromCentreToFaceCentres) {
   const std::vector<std::int32_t> leaves = all_leaves(t);
   const CornerSet corners(t, leaves);
   EXPECT_EQ(corners.size(), 8u);
-  const EmptyBoxMesh m = mesh_empty_boxes(t, corners, leaves);
+  const BoxMesh m = mesh_empty_boxes(t, corners, leaves);
   EXPECT_EQ(m.mesh.tetrahedra.size(), 24u);
   EXPECT_EQ(m.mesh.vertices.size(), 15u);
   const CheckReport r = check_mesh(m.mesh, cube_domain(1));
@@ -76,7 +76,7 @@ TEST(BoxFaces, FaceNextToSmallerBoxesIsSplitIntoTheirSquares) {
   // by the corner of child 0's children: 5 triangles.
   triangulate_box_face(t.key(first + 1), 1, false, corners, tris);
   EXPECT_EQ(tris.size(), 5u);
-  const EmptyBoxMesh m = mesh_empty_boxes(t, corners, leaves);
+  const BoxMesh m = mesh_empty_boxes(t, corners, leaves);
   const CheckReport r = check_mesh(m.mesh, cube_domain(1));
   EXPECT_TRUE(r.valid()) << r.to_text();
 }
@@ -102,11 +102,12 @@ TEST(BoxFaces, RandomTreesTileTheRootCube) {
       const std::vector<std::int32_t> leaves = all_leaves(t);
       for (const std::int32_t n : leaves)
         for (const std::int32_t m : t.neighbours(n)) max_jump = std::max(max_jump, t.level(m) - t.level(n));
-      const EmptyBoxMesh m = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
+      const BoxMesh m = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
       const CheckReport r = check_mesh(m.mesh, cube_domain(1));
       ASSERT_TRUE(r.valid()) << "seed " << seed << (balanced ? " balanced\n" : " unbalanced\n") << r.to_text();
       // Vertex identity is the grid key: no two vertices share a key.
-      ASSERT_EQ(std::set<GridPoint>(m.keys.begin(), m.keys.end()).size(), m.keys.size());
+      ASSERT_EQ(std::set<VertexKey>(m.keys.begin(), m.keys.end()).size(), m.keys.size());
+      for (const VertexKey& k : m.keys) ASSERT_EQ(k.kind, VertexKind::Grid);
     }
   }
   // The unbalanced trees did contain neighbours more than one level apart.
@@ -116,8 +117,8 @@ TEST(BoxFaces, RandomTreesTileTheRootCube) {
 TEST(BoxFaces, OutputIsDeterministic) {
   const OctTree t = random_tree(7, 60, 6, false);
   const std::vector<std::int32_t> leaves = all_leaves(t);
-  const EmptyBoxMesh a = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
-  const EmptyBoxMesh b = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
+  const BoxMesh a = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
+  const BoxMesh b = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
   EXPECT_EQ(a.mesh.tetrahedra, b.mesh.tetrahedra);
   EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
 }

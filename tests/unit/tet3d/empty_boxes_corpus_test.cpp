@@ -69,7 +69,7 @@ TEST_P(GridAligned, FlushLeavesMeshTheDomain) {
   std::printf("%s: %zu flush leaves, %zu of them empty inside (volume %.4f of %.4f)\n", GetParam(), flush.size(),
               empty.size(), empty_volume, d.volume);
   const auto t0 = std::chrono::steady_clock::now();
-  const EmptyBoxMesh m = mesh_empty_boxes(b, flush);
+  const BoxMesh m = mesh_empty_boxes(b, flush);
   print_quality(GetParam(), "flush", m.mesh, seconds_since(t0));
   const CheckReport r = check_mesh(m.mesh, d);
   EXPECT_TRUE(r.valid()) << r.to_text();
@@ -188,7 +188,7 @@ TEST_P(EmptyInside, PartialMeshIsConforming) {
   const std::vector<std::int32_t> leaves = empty_leaves(b, false);
   ASSERT_FALSE(leaves.empty());
   const auto t0 = std::chrono::steady_clock::now();
-  const EmptyBoxMesh m = mesh_empty_boxes(b, leaves);
+  const BoxMesh m = mesh_empty_boxes(b, leaves);
   const double secs = seconds_since(t0);
   print_quality(GetParam(), "empty", m.mesh, secs);
   std::vector<int> facet_of(static_cast<std::size_t>(b.tree().size()), -2);

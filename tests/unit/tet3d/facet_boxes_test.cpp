@@ -11,6 +11,13 @@
 //   * the volume equals that of cube ∩ half-space from the closed formula
 //     sum over cube corners v of (-1)^|v| max(0, d - n.v)^3 / (6 n1 n2 n3)
 //     (n > 0 after reflecting axes), relative 1e-9.
+// Size: 18 random planes, of which those with no tiny normal component are
+// used (13 with this seed; the test asserts at least 10), each through one
+// random tree (balanced for even trials): 13 meshes per warping option, 26 in
+// all, every one checked as above (the first trials' meshes are also built a
+// second time for the determinism check). About 100k tetrahedra per option;
+// all three §4.5.4 cases occur (asserted) and, with warping on, vertices are
+// moved (asserted; 115 with this seed).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -94,7 +101,7 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
   double worst_aspect = 0, min_dihedral = 180, worst_balanced = 0;
   std::int64_t tets = 0, warped = 0, conflicts = 0;
   int meshed = 0;
-  for (int trial = 0; trial < 60; ++trial) {
+  for (int trial = 0; trial < 18; ++trial) {
     // A plane through a point of the cube with a normal no component of which is tiny.
     const Vec3 o{uniform(0.2, 0.8), uniform(0.2, 0.8), uniform(0.2, 0.8)};
     Vec3 n{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
@@ -212,7 +219,10 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
               static_cast<long long>(totals[2]), static_cast<long long>(totals[3]), static_cast<long long>(tets),
               worst_aspect, worst_balanced, min_dihedral, warp ? "on" : "off", static_cast<long long>(warped),
               static_cast<long long>(conflicts));
-  EXPECT_GT(meshed, 20);
+  EXPECT_GE(meshed, 10);
+  if (warp) {
+    EXPECT_GT(warped, 0);
+  }
   EXPECT_GT(totals[1], 0);
   EXPECT_GT(totals[2], 0);
   EXPECT_GT(totals[3], 0);

@@ -1,0 +1,92 @@
+// Leaf kinds (thesis §4.1.7); see leaf_kind.hpp.
+#include "mv3d/leaf_kind.hpp"
+
+#include <algorithm>
+
+namespace pqmesh::mv3d {
+
+const char* to_string(LeafKind kind) {
+  switch (kind) {
+    case LeafKind::Outside: return "outside";
+    case LeafKind::EmptyInside: return "empty-inside";
+    case LeafKind::VertexCone: return "vertex-cone";
+    case LeafKind::EdgeCone: return "edge-cone";
+    case LeafKind::FacetCone: return "facet-cone";
+    case LeafKind::TwoFacet: return "two-facet";
+    case LeafKind::Other: return "other";
+  }
+  return "?";
+}
+
+LeafFaces leaf_faces(const OctreeBuilder& builder, std::int32_t node) {
+  const NodeData3& d = builder.data(node);
+  return {d.has_component, d.vertices, d.edges, d.facets, d.vertex_owner};
+}
+
+LeafClassifier::LeafClassifier(const Domain3& domain) : domain_(domain) {
+  const std::size_t nv = domain.plc.vertices.size();
+  vertex_edges_.resize(nv);
+  vertex_facets_.resize(nv);
+  for (std::size_t e = 0; e < domain.edges.size(); ++e) {
+    const DomainEdge& de = domain.edges[e];
+    vertex_edges_[static_cast<std::size_t>(de.a)].push_back(static_cast<int>(e));
+    vertex_edges_[static_cast<std::size_t>(de.b)].push_back(static_cast<int>(e));
+    const auto key = std::minmax(de.facets[0], de.facets[1]);
+    facet_pair_edge_.emplace(std::pair<int, int>{key.first, key.second}, static_cast<int>(e));
+  }
+  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
+    for (const auto& loop : domain.plc.facets[f].loops)
+      for (const int v : loop) vertex_facets_[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
+  for (auto& list : vertex_facets_) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  // vertex_edges_ is sorted: edges are visited in increasing id.
+}
+
+bool LeafClassifier::is_superface_set(int v, const LeafFaces& faces) const {
+  const auto& ve = vertex_edges_[static_cast<std::size_t>(v)];
+  const auto& vf = vertex_facets_[static_cast<std::size_t>(v)];
+  for (const int x : faces.vertices)
+    if (x != v) return false;
+  for (const int e : faces.edges)
+    if (!std::binary_search(ve.begin(), ve.end(), e)) return false;
+  for (const int f : faces.facets)
+    if (!std::binary_search(vf.begin(), vf.end(), f)) return false;
+  return true;
+}
+
+LeafClass LeafClassifier::classify(const LeafFaces& faces) const {
+  auto same = [](std::span<const int> a, const std::vector<int>& b) { return std::ranges::equal(a, b); };
+  if (!faces.meets_p) return {LeafKind::Outside, -1};
+  if (faces.vertices.empty() && faces.edges.empty() && faces.facets.empty()) return {LeafKind::EmptyInside, -1};
+  if (faces.vertices.size() == 1) {
+    // §4.1.3 (a): one vertex and ALL of its superfaces. Each superface
+    // contains v, which lies in P ∧ b, so a complete face list has them all.
+    const int v = faces.vertices[0];
+    const bool cone = same(faces.edges, vertex_edges_[static_cast<std::size_t>(v)]) &&
+                      same(faces.facets, vertex_facets_[static_cast<std::size_t>(v)]);
+    return cone ? LeafClass{LeafKind::VertexCone, v} : LeafClass{LeafKind::Other, -1};
+  }
+  if (!faces.vertices.empty()) return {LeafKind::Other, -1};
+  // A piece of a united vertex box B: B, not the piece, is the thesis' box.
+  if (faces.vertex_owner >= 0)
+    return is_superface_set(faces.vertex_owner, faces) ? LeafClass{LeafKind::VertexCone, faces.vertex_owner}
+                                                       : LeafClass{LeafKind::Other, -1};
+  if (faces.edges.size() == 1) {
+    const int e = faces.edges[0];
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+    const auto fs = std::minmax(de.facets[0], de.facets[1]);
+    const bool cone = faces.facets.size() == 2 && faces.facets[0] == fs.first && faces.facets[1] == fs.second;
+    return cone ? LeafClass{LeafKind::EdgeCone, e} : LeafClass{LeafKind::Other, -1};
+  }
+  if (!faces.edges.empty()) return {LeafKind::Other, -1};
+  if (faces.facets.size() == 1) return {LeafKind::FacetCone, faces.facets[0]};
+  if (faces.facets.size() == 2) {
+    const auto it = facet_pair_edge_.find({faces.facets[0], faces.facets[1]});
+    if (it != facet_pair_edge_.end()) return {LeafKind::TwoFacet, it->second};
+  }
+  return {LeafKind::Other, -1};
+}
+
+}  // namespace pqmesh::mv3d
