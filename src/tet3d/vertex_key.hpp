@@ -13,6 +13,11 @@
 //   Warped           the box vertex (grid point p) moved h/16 away from facet F (§4.3 second pass)
 //   BoxClip          segment from the box centre p (beyond F) to the grid point q
 //                    clipped at F (§4.5.4 third case, prism tops)
+//   EdgeCrossing     P edge E (id in `facet`) crossing the square with centre p
+//                    (§4.4 Case B); rounded within an ulp of E, exact on S's plane
+//   CrossingProjection  Case D2 with the centre p of S beyond F's chord: the
+//                    segment from p to the crossing of the other facet with the
+//                    ring segment of S starting (counter-clockwise) at q, clipped at F
 //
 // Every key names the same point from both boxes sharing the square, so the
 // two sides build identical vertices.
@@ -31,7 +36,9 @@ enum class VertexKind : std::uint8_t {
   BoxOnFacet,
   FacetCentre,
   BoxClip,
-  Warped
+  Warped,
+  EdgeCrossing,
+  CrossingProjection
 };
 
 struct VertexKey {
@@ -45,10 +52,13 @@ struct VertexKey {
 inline VertexKey grid_key(const GridPoint& p) { return {VertexKind::Grid, p, {}, -1}; }
 
 // Kinds constructed on their facet's plane (rounded onto it, facet_plane.hpp).
+// EdgeCrossing is not among them: its `facet` field is an edge id (the point
+// is within an ulp of the edge, hence near both its facets' planes).
 inline bool on_its_facet(const VertexKey& k) {
   return k.kind == VertexKind::FacetCrossing || k.kind == VertexKind::ChordMidpoint ||
          k.kind == VertexKind::ChordProjection || k.kind == VertexKind::BoxOnFacet ||
-         k.kind == VertexKind::FacetCentre || k.kind == VertexKind::BoxClip;
+         k.kind == VertexKind::FacetCentre || k.kind == VertexKind::BoxClip ||
+         k.kind == VertexKind::CrossingProjection;
 }
 
 struct VertexKeyHash {
