@@ -32,10 +32,13 @@
 // piece (golden-section search on a quasiconvex function). Values of g are
 // therefore accurate to rounding, not exact; ties between equal values are
 // broken by the documented enumeration order (first minimum wins).
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh.hpp"
+#include "pqmesh/quadmesh.hpp"
 #include "pqmesh/vec.hpp"
 
 namespace pqmesh {
@@ -189,5 +192,72 @@ TriMesh2 steiner_free_cdt(const Domain2& domain);
 double cdt_min_angle(const Domain2& domain);
 // Smallest triangle angle of a triangle mesh, radians (floating point).
 double min_triangle_angle(const TriMesh2& mesh);
+
+
+// ---- Thesis §5.2-§5.3: delta, the shrink of Q to R, and R meshed ----------
+// (docs/ALGORITHM.md §11.8-11.9.)
+
+// Thesis §5.1 before Theorem 28: delta(F) for a closed face F (vertex or side)
+// of a polygon = min over closed faces F' of F of the distance from F' to the
+// closest face disjoint from F'. Deviation: Euclidean distance instead of the
+// geodesic distance inside the polygon (a lower bound of it, so R only moves
+// less far from dQ; see §11.8). Loops as in PolygonQ (interior on the left);
+// faces of every loop count. A measurement, not a decision.
+struct PolygonDelta {
+  std::vector<std::vector<double>> vertex;  // delta(V) of loop vertex k
+  std::vector<std::vector<double>> side;    // delta(E) of loop side k -> k+1 (its two ends included)
+};
+PolygonDelta polygon_delta(const std::vector<std::vector<Vec2>>& loops);
+
+// The points of dQ, one vector per loop of q.loops.
+std::vector<std::vector<Vec2>> q_loop_points(const PolygonQ& q);
+
+// Thesis §5.2 (Fig. 5.14): every side E of Q gets a parallel shrunk side at
+// distance delta(E)/4 inside Q. A vertex V of Q with interior angle
+// <= 3 pi/4 (an exact decision) gets one R vertex, where the shrunk lines of
+// its two sides meet (Case 1); otherwise (Case 2) two R vertices, on the rays
+// from V at pi/4 either side of the interior bisector, each on the shrunk line
+// of the side on its side, joined by a shrunk side for V.
+struct PolygonR {
+  std::vector<std::vector<Vec2>> loops;         // one per Q loop, interior on the left
+  std::vector<std::vector<int>> vertex_source;  // R vertex -> the Q vertex (index in its Q loop) it comes from
+  std::vector<std::vector<int>> side_source;    // R side k -> k+1: Q side index (>= 0), or -1 - (Q vertex index) for Case 2
+  std::vector<std::vector<double>> side_delta;  // delta of the source face of each R side (delta(E) or delta(V))
+  PolygonDelta delta;                           // of Q
+  int case1 = 0, case2 = 0;                     // Q vertices by case
+  // false when some shrink distance delta(E)/4 is below kRShrinkResolution
+  // times |x| + |y| of its Q vertex: the offsets would be a few thousand ulps
+  // or less and rounding decides R's shape (the spiral-depth limit of
+  // docs/ALGORITHM.md §11.6 carried into R). R is still constructed.
+  bool representable = true;
+  bool valid = true;     // every shrunk side keeps its direction and Case 2 sides turn as at V (exact checks)
+  std::string failure;   // first violation when !valid
+};
+inline constexpr double kRShrinkResolution = 1.0 / (1ull << 44);  // 2^-44 ~ 5.7e-14, ~2^8 ulps
+PolygonR shrink_q_to_r(const std::vector<std::vector<Vec2>>& q_loops);
+
+// R as a validated Domain2 (make_domain; throws DomainError if R is not a
+// polygon with holes, which the tests count as a failure).
+Domain2 polygon_r_domain(const PolygonR& r);
+
+// Thesis §5.3 and §5.5.1: R meshed by quad_mesh, with the two properties the
+// matching stage (§5.4) needs measured on the result:
+//  1. a mesh edge G inside an R side F has L(G) >= c delta(source of F):
+//     min_side_edge_over_delta is the smallest L(G) / side_delta(F);
+//  2. two mesh edges sharing a vertex have bounded length ratio:
+//     max_incident_ratio over all pairs, max_boundary_ratio over the two
+//     mesh edges on dR at each boundary vertex.
+struct RMesh {
+  Domain2 domain;
+  QuadMeshResult result;
+  double min_side_edge_over_delta = 0;
+  double max_incident_ratio = 0;
+  double max_boundary_ratio = 0;
+  double min_angle = 0;  // radians
+};
+// Measures the properties on a mesh of R made by quad_mesh (src/nosteiner2d/mesh_r.cpp).
+RMesh r_mesh_properties(const PolygonR& r, Domain2 domain, QuadMeshResult result);
+// R meshed by quad_mesh with `options`, and its properties.
+RMesh mesh_r(const PolygonR& r, const QuadMeshOptions& options = {});
 
 }  // namespace pqmesh
