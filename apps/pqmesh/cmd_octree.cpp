@@ -29,6 +29,8 @@ const char* phase_name(mv3d::OctPhase p) {
     case mv3d::OctPhase::Facet: return "facet";
     case mv3d::OctPhase::Balance: return "balance";
     case mv3d::OctPhase::Size: return "size";
+    case mv3d::OctPhase::EdgeSeparate: return "edge-separate";
+    case mv3d::OctPhase::FacetSeparate: return "facet-separate";
   }
   return "?";
 }
@@ -172,7 +174,8 @@ int run_octree(const std::vector<std::string>& argv) {
               << " protected, " << duplicate_leaves << " on duplicated cubes)\n"
               << "depth      " << deepest << " (root side " << builder.tree().root().size << ")\n"
               << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", centering " << s.splits_centering << ", edge "
-              << s.splits_edge << ", facet " << s.splits_facet << ", balance " << s.splits_balance << '\n'
+              << s.splits_edge << ", edge-separate " << s.splits_edge_separate << ", facet " << s.splits_facet
+              << ", facet-separate " << s.splits_facet_separate << ", balance " << s.splits_balance << '\n'
               << "duplicates " << s.duplicates << " created\n"
               << "components " << s.components_split << " at splits, " << s.components_extended
               << " extended boxes, " << s.components_adjacency << " adjacency queries\n"
@@ -185,7 +188,8 @@ int run_octree(const std::vector<std::string>& argv) {
               << "time       " << seconds << " s\n"
               << "output     " << output << " (VTK hexahedra; cell data level, component, duplicate, protected,\n"
               << "           phase " << phase_name(mv3d::OctPhase::Root) << "=0 vertex=1 centering=2 edge=3 facet=4 "
-              << "balance=5 size=6, vertex_owner)\n";
+              << "balance=5 size=6\n"
+              << "           edge-separate=7 facet-separate=8, vertex_owner)\n";
   }
   return kExitOk;
 }

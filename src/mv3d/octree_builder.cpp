@@ -83,6 +83,20 @@ OctPhase OctreeBuilder::phase(std::int32_t node) const {
   return static_cast<std::size_t>(node) < phase_.size() ? phase_[static_cast<std::size_t>(node)] : OctPhase::Root;
 }
 
+OctPhase OctreeBuilder::protected_by(std::int32_t node) const {
+  const auto i = static_cast<std::size_t>(node);
+  return i < protected_by_.size() ? protected_by_[i] : OctPhase::Root;
+}
+
+// Protects a node not yet protected, recording the step.
+void OctreeBuilder::protect(std::int32_t node, OctPhase step) {
+  if (tree_.is_protected(node)) return;
+  tree_.set_protected(node, true);
+  const auto i = static_cast<std::size_t>(node);
+  if (protected_by_.size() <= i) protected_by_.resize(i + 1, OctPhase::Root);
+  protected_by_[i] = step;
+}
+
 bool OctreeBuilder::facet_has_vertex(int facet, int v) const {
   return contains(facet_vertices_[static_cast<std::size_t>(facet)], v);
 }
@@ -485,7 +499,7 @@ void OctreeBuilder::center_vertices() {
     const double z0 = p.z < s.lo.z + 0.5 * h ? s.lo.z - h : s.lo.z;
     vertex_box_[v] = {{x0, y0, z0}, {x0 + 2 * h, y0 + 2 * h, z0 + 2 * h}};
     ++stats_.vertex_boxes;
-    tree_.set_protected(b, true);
+    protect(b, OctPhase::Centering);
   }
   std::vector<std::int32_t> found;
   for (std::size_t v = 0; v < pv.size(); ++v) {
@@ -507,20 +521,63 @@ void OctreeBuilder::center_vertices() {
   }
 }
 
+bool OctreeBuilder::shielded(std::int32_t node) const {
+  return tree_.is_protected(node) || data(node).vertex_owner >= 0;
+}
+
+// §4.1.4 "we begin by splitting every unprotected box containing a P edge and
+// its balance-adjacent boxes" (§4.1.5 the same for facets). The set is fixed
+// before any of them is split, so that every box is split at most once.
+std::vector<std::int32_t> OctreeBuilder::separation_set(bool facets) const {
+  std::vector<std::int32_t> out, near;
+  for (const std::int32_t n : leaves_by_id()) {
+    const NodeData3& d = data(n);
+    if (!d.has_component || shielded(n) || (facets ? d.facets.empty() : d.edges.empty())) continue;
+    out.push_back(n);
+    tree_.neighbours(n, near);
+    for (const std::int32_t m : near) {
+      if (!tree_.is_leaf(m) || !data(m).has_component || shielded(m)) continue;
+      if (tree_.level(m) <= tree_.level(n) ? balance_adjacent(m, n) : balance_adjacent(n, m)) out.push_back(m);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// §4.1.7 steps 6 and 9: split each box of the separation set once (balance
+// restored after each split). A box split meanwhile by balancing is no longer
+// a leaf and is skipped: its children are not split again. Afterwards a box
+// (other than a protected one) balance-adjacent to a box holding an edge E
+// (facet F) is balance-adjacent to no box holding another edge (facet) (§4.1.4).
+void OctreeBuilder::separate(OctPhase which) {
+  std::int64_t& counter = which == OctPhase::EdgeSeparate ? stats_.splits_edge_separate : stats_.splits_facet_separate;
+  for (const std::int32_t n : separation_set(which == OctPhase::FacetSeparate)) {
+    if (!tree_.is_leaf(n)) continue;
+    if (tree_.level(n) >= tree_.max_level())
+      throw InternalError("mv3d octree: a separating split reached the deepest representable level");
+    split_and_balance(n, which);
+    ++counter;
+  }
+}
+
 // §4.1.4 "Protecting edge cone boxes": every box containing a P edge, and
 // every box balance-adjacent to one, is protected (never split again). Without
 // it the facet phase would split the boxes along an edge with a small dihedral
-// angle through the balance condition without end. (The thesis first splits
-// every such box once; we omit that separating split.)
-void OctreeBuilder::protect_edge_boxes() {
+// angle through the balance condition without end. §4.1.5: the same for facet
+// boxes after the facet phase ("for the sake of consistent terminology"; no
+// split follows).
+void OctreeBuilder::protect_boxes(bool facets) {
   std::vector<std::int32_t> near;
   for (const std::int32_t n : leaves_by_id()) {
-    if (!data(n).has_component || data(n).edges.empty()) continue;
-    tree_.set_protected(n, true);
+    const NodeData3& d = data(n);
+    if (!d.has_component || (facets ? d.facets.empty() : d.edges.empty())) continue;
+    const OctPhase step = facets ? OctPhase::Facet : OctPhase::Edge;
+    protect(n, step);
     tree_.neighbours(n, near);
     for (const std::int32_t m : near) {
       const bool adjacent = tree_.level(m) <= tree_.level(n) ? balance_adjacent(m, n) : balance_adjacent(n, m);
-      if (adjacent) tree_.set_protected(m, true);
+      if (adjacent) protect(m, step);
     }
   }
 }
@@ -544,9 +601,15 @@ void OctreeBuilder::build() {
   done();
   run_phase(OctPhase::Edge, &OctreeBuilder::edge_crowded);
   done();
-  protect_edge_boxes();
+  if (options_.separate) separate(OctPhase::EdgeSeparate);
+  done();
+  protect_boxes(false);
   done();
   run_phase(OctPhase::Facet, &OctreeBuilder::facet_crowded);
+  done();
+  if (options_.separate) separate(OctPhase::FacetSeparate);
+  done();
+  protect_boxes(true);
   done();
   for (const std::int32_t n : leaves_by_id()) {
     ++stats_.leaves;

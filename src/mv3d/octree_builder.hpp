@@ -22,15 +22,22 @@
 //                 the block get vertex_owner (as in 2D, ALGORITHM.md §8.2: no
 //                 Tree::merge, so the block still grades towards small boxes);
 //   3. edge:      split edge-crowded boxes (§4.1.4);
-//   4. protect:   protect the edge boxes and their balance-adjacent boxes (§4.1.4);
-//   5. facet:     split facet-crowded boxes (§4.1.5).
+//   4. edge-separate: split once every unprotected leaf holding a P edge and
+//                 its balance-adjacent leaves (§4.1.7 step 6; the set is
+//                 collected first, leaves split meanwhile by balancing skipped);
+//   5. protect:   protect the edge boxes and their balance-adjacent boxes (§4.1.4);
+//   6. facet:     split facet-crowded boxes (§4.1.5);
+//   7. facet-separate: the same once-only splits for leaves holding a P facet
+//                 (§4.1.7 step 9);
+//   8. facet-protect: protect the facet boxes and their balance-adjacent boxes
+//                 (§4.1.5 "for the sake of consistent terminology").
+// For the separating splits, leaves inside a united vertex box (vertex_owner
+// >= 0) count as protected (pieces of the protected vertex box, §4.1.3).
 // Balance (§4.1.1) between balance-adjacent boxes is restored after every split
 // (Tree::balance; protected boxes are never split).
 // Deviations (documented at edge_crowded / facet_crowded): extended boxes are not
 // cut by protected boxes; instead a face sharing a vertex with the apex
-// interferes only if it meets P ∧ b itself (the 2D edge rule). The separating
-// splits of §4.1.4-4.1.5 (split every edge/facet box once before protecting)
-// and the protection of facet boxes (no phase follows) are not done.
+// interferes only if it meets P ∧ b itself (the 2D edge rule).
 // Cost: dominated by components() (exact, double filters before GMP): one per
 // child meeting ∂P per split, one per extended box (cached per node), and one
 // per balance-adjacency query involving a box inside P. Each looks only at
@@ -49,7 +56,8 @@
 
 namespace pqmesh::mv3d {
 
-enum class OctPhase : std::uint8_t { Root, Vertex, Centering, Edge, Facet, Balance, Size };
+// Values are written to .vtu cell data (cmd_octree.cpp): append, never renumber.
+enum class OctPhase : std::uint8_t { Root, Vertex, Centering, Edge, Facet, Balance, Size, EdgeSeparate, FacetSeparate };
 
 // The user size function of thesis §1.1 ("the largest desired box containing
 // that point"), as in 2D (quad2d/size_function.hpp): f(x) = min(max_size,
@@ -65,6 +73,13 @@ struct SizeField3 {
 struct OctreeOptions {
   double max_size = 0;     // largest box side anywhere; 0: no cap
   SizeField3 size_field;   // empty: none
+  // The once-only separating splits of §4.1.7 steps 6 and 9 (every edge /
+  // facet box and its balance-adjacent boxes split once before protection).
+  // With them every leaf is one of the thesis's kinds (without them random
+  // polyhedron seed 7 leaves a protected box holding three facets of a vertex
+  // outside it); they cost about 10x the leaves (ALGORITHM.md §10). Off only
+  // for callers that study other stages on smaller trees (the tet3d tests).
+  bool separate = true;
 };
 
 struct NodeData3 {
@@ -84,17 +99,19 @@ struct NodeData3 {
 struct OctreeStats {
   std::int64_t splits_size = 0;
   std::int64_t splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0, splits_balance = 0;
+  std::int64_t splits_edge_separate = 0, splits_facet_separate = 0;  // §4.1.7 steps 6 and 9
   std::int64_t duplicates = 0;
   std::int64_t leaves = 0, outside_leaves = 0, vertex_boxes = 0;
   // components() calls (the dominant cost): for children and parents at a
   // split, for cached extended boxes, for uncached balance-adjacency queries.
   std::int64_t components_split = 0, components_extended = 0, components_adjacency = 0;
-  // Per phase of build(), in order size, vertex, centering, edge, protect,
-  // facet: wall seconds, and leaves (all duplicates counted) when it ends.
-  static constexpr int kPhases = 6;
-  static constexpr const char* kPhaseNames[kPhases] = {"size", "vertex", "centering", "edge", "protect", "facet"};
-  double phase_seconds[kPhases] = {0, 0, 0, 0, 0, 0};
-  std::int64_t phase_leaves[kPhases] = {0, 0, 0, 0, 0, 0};
+  // Per phase of build(), in the order of kPhaseNames: wall seconds, and
+  // leaves (all duplicates counted) when it ends.
+  static constexpr int kPhases = 9;
+  static constexpr const char* kPhaseNames[kPhases] = {
+      "size", "vertex", "centering", "edge", "edge-separate", "protect", "facet", "facet-separate", "facet-protect"};
+  double phase_seconds[kPhases] = {};
+  std::int64_t phase_leaves[kPhases] = {};
 };
 
 // The faces of P ∧ ex(b) (§4.1.1 "Extended Box").
@@ -124,6 +141,9 @@ class OctreeBuilder {
   ExtendedFaces3 extended_faces(std::int32_t node) const;
   // The phase whose split (or balancing) created the node (Root for the root).
   OctPhase phase(std::int32_t node) const;
+  // The step that protected the node: Centering (vertex box), Edge (§4.1.4
+  // edge-box protection), Facet (§4.1.5 facet-box protection); Root if unprotected.
+  OctPhase protected_by(std::int32_t node) const;
 
  private:
   static constexpr std::int32_t kInterior = 1;
@@ -146,7 +166,13 @@ class OctreeBuilder {
   bool facet_crowded(std::int32_t node) const;
   void run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const);
   void center_vertices();
-  void protect_edge_boxes();
+  // Leaves meeting P that hold a P edge (Edge) or a P facet (Facet), outside
+  // every protected box, with their balance-adjacent unprotected leaves.
+  std::vector<std::int32_t> separation_set(bool facets) const;
+  void separate(OctPhase which);           // §4.1.7 steps 6 and 9
+  void protect_boxes(bool facets);         // §4.1.4 / §4.1.5 protection
+  void protect(std::int32_t node, OctPhase step);
+  bool shielded(std::int32_t node) const;  // protected, or a piece of a united vertex box
   void record_phase(std::int32_t node);
   bool facet_has_vertex(int facet, int v) const;
 
@@ -159,6 +185,7 @@ class OctreeBuilder {
   std::vector<std::vector<int>> facet_vertices_;                   // sorted vertex ids of each facet (all loops)
   mutable std::vector<std::unique_ptr<CubeComponents>> ex_cache_;  // per node id, see cached_extended
   std::vector<OctPhase> phase_;                                    // per node id
+  std::vector<OctPhase> protected_by_;                             // per node id, see protected_by
   OctPhase current_phase_ = OctPhase::Root;
 };
 

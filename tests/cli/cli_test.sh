@@ -178,6 +178,8 @@ if [[ ! -e $work/never_octree.vtu ]]; then ok; else fail "refused octree run lef
 expect 0 "octree cube --max-size" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes_h.vtu" --max-size 0.125
 contains "$work/out" "^splits     size [1-9]" "octree --max-size splits in the size phase"
 contains "$work/out" "^phases" "octree summary has the per-phase line"
+contains "$work/out" "edge-separate [1-9].*facet-separate [1-9]" "octree summary counts the separating splits (thesis 4.1.7 steps 6, 9)"
+contains "$work/out" "facet-protect [1-9]" "octree summary has the facet-protect phase"
 printf '# x y z size\n0.5 0.5 0.9 0.01\n' > "$work/field3.txt"
 expect 0 "octree cube --size-field" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes_f.vtu" --size-field "$work/field3.txt"
 contains "$work/out" "^splits     size [1-9]" "octree --size-field splits in the size phase"
