@@ -14,6 +14,7 @@
 #include "io/read_text_tokens.hpp"
 #include "commands.hpp"
 #include "load.hpp"
+#include "mv3d/leaf_kind.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/errors.hpp"
 
@@ -53,7 +54,17 @@ void int_array(std::ostringstream& s, const char* name, const char* type, const 
 // points per leaf (not shared), corners in VTK order: the lower face
 // counter-clockwise seen from below... i.e. (0,0,0) (1,0,0) (1,1,0) (0,1,0), then
 // the upper face in the same order.
-std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int32_t>& leaves) {
+// The kind of every leaf (mv3d/leaf_kind.hpp), indexed by node id.
+std::vector<mv3d::LeafKind> leaf_kinds(const mv3d::OctreeBuilder& b, const std::vector<std::int32_t>& leaves) {
+  const mv3d::LeafClassifier classifier(b.domain());
+  std::vector<mv3d::LeafKind> kinds(static_cast<std::size_t>(b.tree().size()), mv3d::LeafKind::Other);
+  for (const std::int32_t n : leaves)
+    kinds[static_cast<std::size_t>(n)] = classifier.classify(mv3d::leaf_faces(b, n)).kind;
+  return kinds;
+}
+
+std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int32_t>& leaves,
+                       const std::vector<mv3d::LeafKind>& kinds /* by node id */) {
   const OctTree& t = b.tree();
   std::ostringstream s;
   s.precision(std::numeric_limits<double>::max_digits10);
@@ -89,6 +100,13 @@ std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int3
   int_array(s, "protected", "UInt8", leaves, [&](std::int32_t n) { return t.is_protected(n) ? 1 : 0; });
   int_array(s, "phase", "Int32", leaves, [&](std::int32_t n) { return static_cast<int>(b.phase(n)); });
   int_array(s, "vertex_owner", "Int32", leaves, [&](std::int32_t n) { return b.data(n).vertex_owner; });
+  // Cone kind (LeafKind order) and the step that protected the leaf (its
+  // OctPhase; 0 when unprotected).
+  int_array(s, "cone_kind", "Int32", leaves,
+            [&](std::int32_t n) { return static_cast<int>(kinds[static_cast<std::size_t>(n)]); });
+  int_array(s, "protected_by", "Int32", leaves, [&](std::int32_t n) {
+    return t.is_protected(n) ? static_cast<int>(b.protected_by(n)) : 0;
+  });
   s << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return s.str();
 }
@@ -157,7 +175,8 @@ int run_octree(const std::vector<std::string>& argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::vector<std::int32_t> leaves = builder.leaves_by_id();
-  write_text_file_atomic(output, leaves_vtu(builder, leaves));
+  const std::vector<mv3d::LeafKind> kinds = leaf_kinds(builder, leaves);
+  write_text_file_atomic(output, leaves_vtu(builder, leaves, kinds));
 
   if (!args.flag("--quiet")) {
     const mv3d::OctreeStats& s = builder.stats();
@@ -180,6 +199,12 @@ int run_octree(const std::vector<std::string>& argv) {
               << "components " << s.components_split << " at splits, " << s.components_extended
               << " extended boxes, " << s.components_adjacency << " adjacency queries\n"
               << "vertex boxes " << s.vertex_boxes << '\n';
+    std::int64_t per_kind[mv3d::kLeafKinds] = {};
+    for (const std::int32_t n : leaves) ++per_kind[static_cast<int>(kinds[static_cast<std::size_t>(n)])];
+    std::cout << "kinds     ";
+    for (int k = 0; k < mv3d::kLeafKinds; ++k)
+      std::cout << (k ? ", " : " ") << mv3d::to_string(static_cast<mv3d::LeafKind>(k)) << ' ' << per_kind[k];
+    std::cout << '\n';
     std::cout << "phases     (leaves at the end, seconds)";
     for (int p = 0; p < mv3d::OctreeStats::kPhases; ++p)
       std::cout << (p % 3 == 0 ? "\n          " : ",") << ' ' << mv3d::OctreeStats::kPhaseNames[p] << ' '
@@ -189,7 +214,9 @@ int run_octree(const std::vector<std::string>& argv) {
               << "output     " << output << " (VTK hexahedra; cell data level, component, duplicate, protected,\n"
               << "           phase " << phase_name(mv3d::OctPhase::Root) << "=0 vertex=1 centering=2 edge=3 facet=4 "
               << "balance=5 size=6\n"
-              << "           edge-separate=7 facet-separate=8, vertex_owner)\n";
+              << "           edge-separate=7 facet-separate=8, vertex_owner, cone_kind (0 outside, 1 empty,\n"
+              << "           2 vertex cone, 3 edge cone, 4 facet cone, 5 two facets, 6 other), protected_by (the\n"
+              << "           phase number of the step that protected it, 0 if unprotected))\n";
   }
   return kExitOk;
 }

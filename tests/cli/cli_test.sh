@@ -170,6 +170,9 @@ if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "refused mesh r
 expect 0 "octree cube" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes.vtu"
 contains "$work/cube_boxes.vtu" "UnstructuredGrid" "octree writes a .vtu"
 contains "$work/cube_boxes.vtu" "Name=\"level\"" "octree .vtu has the level field"
+contains "$work/cube_boxes.vtu" "Name=\"cone_kind\"" "octree .vtu has the cone kind field"
+contains "$work/cube_boxes.vtu" "Name=\"protected_by\"" "octree .vtu has the protection step field"
+contains "$work/out" "^kinds .* other 0$" "every cube octree leaf is one of the thesis kinds"
 if /usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); sys.exit(0 if m.cells[0].type == 'hexahedron' and len(m.cells[0].data) > 0 else 1)" "$work/cube_boxes.vtu" 2>/dev/null; then ok; else fail "meshio does not read the octree boxes as hexahedra"; fi
 expect 2 "octree of a 2D input" -- "$pqmesh" octree "$data/2d/square.poly" -o "$work/never_octree.vtu"
 expect 64 "octree without -o" -- "$pqmesh" octree "$data/3d/cube.poly"
