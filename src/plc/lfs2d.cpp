@@ -242,19 +242,6 @@ int BoundaryBuckets2::gi(double v, double l) const {
   return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(gn_ - 1)));
 }
 
-// Exact: does the closed segment ab meet the closed box [p, q]? Separating
-// axes of a segment and a box: x, y and the segment's normal.
-static bool segment_meets_box(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
-  if (std::max(a.x, b.x) < p.x || std::min(a.x, b.x) > q.x || std::max(a.y, b.y) < p.y || std::min(a.y, b.y) > q.y)
-    return false;
-  int pos = 0, neg = 0;
-  for (Vec2 c : {p, Vec2{q.x, p.y}, q, Vec2{p.x, q.y}}) {
-    const Sign s = orient2d(a, b, c);
-    pos += s == Sign::Positive;
-    neg += s == Sign::Negative;
-  }
-  return pos < 4 && neg < 4;
-}
 
 bool BoundaryBuckets2::box_meets_boundary(Vec2 p, Vec2 q) {
   ++stamp_id_;
@@ -267,7 +254,7 @@ bool BoundaryBuckets2::box_meets_boundary(Vec2 p, Vec2 q) {
         if (stamp_[static_cast<std::size_t>(e)] == stamp_id_) continue;
         stamp_[static_cast<std::size_t>(e)] = stamp_id_;
         const auto& ed = edges_[static_cast<std::size_t>(e)];
-        if (segment_meets_box(P[static_cast<std::size_t>(ed[0])], P[static_cast<std::size_t>(ed[1])], p, q))
+        if (segment_meets_rect(P[static_cast<std::size_t>(ed[0])], P[static_cast<std::size_t>(ed[1])], p, q))
           return true;
       }
   return false;

@@ -26,19 +26,6 @@ namespace {
 // orient2d_projected.
 Vec2 project(Vec3 v, int drop) { return {lfs_axis(v, (drop + 1) % 3), lfs_axis(v, (drop + 2) % 3)}; }
 
-// The closed 2D segment ab meets the closed rectangle [p, q]: separating axes
-// x, y and the segment's normal.
-bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
-  if (std::max(a.x, b.x) < p.x || std::min(a.x, b.x) > q.x || std::max(a.y, b.y) < p.y || std::min(a.y, b.y) > q.y)
-    return false;
-  int pos = 0, neg = 0;
-  for (Vec2 c : {p, Vec2{q.x, p.y}, q, Vec2{p.x, q.y}}) {
-    const Sign s = orient2d(a, b, c);
-    pos += s == Sign::Positive;
-    neg += s == Sign::Negative;
-  }
-  return pos < 4 && neg < 4;
-}
 
 // p lies on the closed 2D segment uv, given orient2d(u, v, p) == 0.
 bool on_collinear_segment(Vec2 p, Vec2 u, Vec2 v) {

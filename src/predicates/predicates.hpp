@@ -67,10 +67,17 @@ constexpr Sign compare(double a, double b) { return a > b ? Sign::Positive : (a 
 // the rule by which the checker (src/mesh) accepts it as lying on the
 // segment (docs/ALGORITHM.md §5). Exact: a separating-axis test with the two
 // box axes and the segment's normal, the latter by orient2d on the corners.
+inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi);
+
 inline bool within_ulp_of_segment(Vec2 p, Vec2 a, Vec2 b) {
   const double inf = std::numeric_limits<double>::infinity();
-  const Vec2 lo{std::nextafter(p.x, -inf), std::nextafter(p.y, -inf)};
-  const Vec2 hi{std::nextafter(p.x, inf), std::nextafter(p.y, inf)};
+  return segment_meets_rect(a, b, {std::nextafter(p.x, -inf), std::nextafter(p.y, -inf)},
+                            {std::nextafter(p.x, inf), std::nextafter(p.y, inf)});
+}
+
+// The closed segment ab meets the closed rectangle [lo, hi] (lo <= hi). Exact:
+// separating axes x, y and the segment's normal (orient2d on the corners).
+inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
   if (hi.x < std::min(a.x, b.x) || lo.x > std::max(a.x, b.x) || hi.y < std::min(a.y, b.y) ||
       lo.y > std::max(a.y, b.y))
     return false;
