@@ -155,6 +155,11 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 }  // namespace
 
+const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
+                                                 "--fixed-boundary"};
+const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
+                                                   "--refine-angle"};
+
 int run_mesh(const std::vector<std::string>& argv) {
 #if defined(__GLIBC__)
   // Peak memory: glibc raises its mmap threshold each time a large block is
@@ -165,6 +170,14 @@ int run_mesh(const std::vector<std::string>& argv) {
   // peak at 1.7 million triangles.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
+  {
+    // Route by mode and input dimension before the 2D options are checked:
+    // the 3D and chapter-5 runs have options of their own.
+    const Args any(argv, kMeshFlagsAnyMode, kMeshOptionsAnyMode);
+    any.expect_positional(1, 1);
+    if (any.flag("--no-boundary-steiner")) return run_mesh_no_steiner(argv);
+    if (domain_dimension(any.positional()[0]) == 3) return run_mesh3(argv);
+  }
   const Args args(argv, {"--quiet", "--protect-edges"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
@@ -187,10 +200,6 @@ int run_mesh(const std::vector<std::string>& argv) {
   run.format = forced ? *forced : mesh_format_from_path(run.output);
   const bool quiet = args.flag("--quiet");
 
-  if (domain_dimension(run.input) != 2) {
-    std::cerr << "pqmesh mesh: " << run.input << ": 3D meshing is not available yet (issue 5)\n";
-    return kExitInvalidInput;
-  }
   const Domain2 domain = make_domain(read_pslg(run.input));
   if (const auto field = args.option("--size-field")) run.options.size_field = read_size_field2(*field);
 

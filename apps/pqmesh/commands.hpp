@@ -2,6 +2,7 @@
 // The subcommands of the pqmesh tool. Each returns the process exit code and
 // may throw: UsageError, InvalidInput (bad input file), InternalError; main()
 // turns those into a message on stderr and the documented exit code.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,13 @@ struct Command {
 
 int run_info(const std::vector<std::string>& args);
 int run_mesh(const std::vector<std::string>& args);
+// `pqmesh mesh` on a 3D input (cmd_mesh3.cpp) and with --no-boundary-steiner
+// (cmd_mesh_nosteiner.cpp); run_mesh routes to them.
+int run_mesh3(const std::vector<std::string>& args);
+int run_mesh_no_steiner(const std::vector<std::string>& args);
+// Every flag and option any mode of `pqmesh mesh` accepts; each mode then
+// checks its own subset.
+extern const std::set<std::string> kMeshFlagsAnyMode, kMeshOptionsAnyMode;
 int run_check(const std::vector<std::string>& args);
 int run_quality(const std::vector<std::string>& args);
 int run_convert(const std::vector<std::string>& args);
