@@ -12,15 +12,11 @@ ignored. Every vertex must lie on exactly two segments (the segments form
 closed, disjoint loops), which is what gmsh's Curve Loops need.
 """
 import math
+import os
 import sys
 
-
-def number_lines(path):
-    with open(path) as f:
-        for line in f:
-            words = line.split("#", 1)[0].split()
-            if words:
-                yield [float(w) for w in words]
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from poly_numbers import number_lines  # noqa: E402
 
 
 def read_poly(path):

@@ -14,15 +14,11 @@ largest area; its other polygons are holes in it. Shells are the classes of
 facets joined by shared vertices; the outer shell is the one whose bounding box
 is largest (the others are cavities).
 """
+import os
 import sys
 
-
-def number_lines(path):
-    with open(path) as f:
-        for line in f:
-            words = line.split("#", 1)[0].split()
-            if words:
-                yield [float(w) for w in words]
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from poly_numbers import number_lines  # noqa: E402
 
 
 def read_poly(path):
