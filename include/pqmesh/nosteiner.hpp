@@ -261,3 +261,93 @@ RMesh r_mesh_properties(const PolygonR& r, Domain2 domain, QuadMeshResult result
 RMesh mesh_r(const PolygonR& r, const QuadMeshOptions& options = {});
 
 }  // namespace pqmesh
+
+
+// ---- Thesis ch. 5 assembled: the triangulation without boundary Steiner points ----
+// (src/nosteiner2d/triangulate_nosteiner.cpp; docs/ALGORITHM.md §11.10-11.14.)
+//
+// The mesh of P is Q^c (the welded wedges and edge triangles, §5.1.1) + the
+// region between dQ and dR (§5.4) + the mesh of R (§5.3). Every vertex other
+// than the input vertices lies strictly inside P: the spoke ends and dQ by
+// construction of the wedges, R strictly inside Q (§5.2). The region between
+// dQ and dR is triangulated by the matching of §5.4, `detail::match_q_to_r`
+// (src/nosteiner2d/match_qr.hpp): match trapezoids and triangles, square
+// drawing, Steiner points strictly inside Q \ R only.
+//
+// Fallbacks (never silent; NoSteinerStats::path and fallback_reason say which
+// and why). Where a stage cannot be built in doubles (the spiral-depth limit of
+// §11.6, R below resolution §11.8) or a built stage fails the final check:
+//   QOnly: Q^c + the constrained Delaunay triangulation of Q (no point added
+//          inside Q); used when R cannot be built or the full mesh fails.
+//   Cdt:   the constrained Delaunay triangulation of P (steiner_free_cdt); used
+//          when Q cannot be built or the QOnly mesh fails.
+// Both keep dP exactly as given: the mesh vertices on dP are the input
+// vertices, the boundary edges are the input segments.
+
+namespace pqmesh {
+
+// Region attribute (TriMesh2::triangle_markers) of each triangle: the stage that made it.
+inline constexpr int kRegionWedges = 1;   // Q^c: vertex wedges and edge welds (§5.1.1)
+inline constexpr int kRegionBetween = 2;  // between dQ and dR (§5.4)
+inline constexpr int kRegionR = 3;        // R meshed by quad_mesh (§5.3)
+inline constexpr int kRegionQCdt = 4;     // QOnly fallback: the CDT of Q
+inline constexpr int kRegionPCdt = 5;     // Cdt fallback: the CDT of P
+
+struct NoSteinerOptions {
+  // The mesher for R (§5.3). Default: refinement towards 20 degrees (§11.9:
+  // both settings have the properties of §5.5.1; refined angles are better).
+  QuadMeshOptions r_mesh;
+  // Run check_mesh (no_boundary_steiner) on the assembled mesh and fall back
+  // (QOnly, then Cdt) when it fails. Off only for timing the stages alone.
+  bool verify = true;
+  // Also compute the Steiner-free CDT's min angle for the report.
+  bool compare_cdt = true;
+  // Output the CDT of P instead when its min angle is strictly larger (path
+  // CdtBetter; needs compare_cdt). Both are triangulations without boundary
+  // Steiner points; the pipeline's min angle stays in pipeline_min_angle.
+  // Measured (docs/ALGORITHM.md §11.12): the pipeline is below the CDT on
+  // most inputs (the thesis's constants are small), so this is on by default.
+  bool keep_better_cdt = true;
+};
+
+// Cdt: fallback (a stage could not be built); CdtBetter: the pipeline ran,
+// and the CDT of P had the larger min angle (keep_better_cdt).
+enum class NoSteinerPath { Full, QOnly, Cdt, CdtBetter };
+const char* to_string(NoSteinerPath path);  // "full", "q-only", "cdt", "cdt-better"
+
+struct NoSteinerStats {
+  // The bound (thesis Theorems 17, 21; SteinerFreeBound with default options).
+  double g = 0;                    // radians
+  double constant = kSteinerFreeBoundConstant;
+  double upper_bound = 0;          // min(pi/3, constant * g): no Steiner-free triangulation does better
+  double min_angle = 0;            // achieved, radians (of the output)
+  double pipeline_min_angle = 0;   // of the Full / QOnly / Cdt mesh before keep_better_cdt
+  NoSteinerPath pipeline_path = NoSteinerPath::Full;  // its path
+  std::int64_t pipeline_triangles = 0, pipeline_vertices = 0;  // its size (the output size m of §5.5.2)
+  double ratio = 0;                // min_angle / g
+  double cdt_min_angle = 0;        // the CDT of P (when compare_cdt), radians
+  NoSteinerPath path = NoSteinerPath::Full;
+  std::string fallback_reason;     // empty for Full; for CdtBetter, the two angles
+  // Counts (triangles by region; vertices of Q and R loops).
+  std::int64_t triangles = 0, vertices = 0;
+  std::int64_t wedge_triangles = 0, between_triangles = 0, r_triangles = 0, cdt_triangles = 0;
+  std::int64_t q_vertices = 0, r_vertices = 0;
+  // Smallest angle per region (radians; 0 when the region is empty).
+  double wedge_min_angle = 0, between_min_angle = 0, r_min_angle = 0;
+  // Wall-clock seconds per stage.
+  double seconds_bound = 0, seconds_q = 0, seconds_r = 0, seconds_between = 0, seconds_verify = 0,
+         seconds_cdt = 0, seconds_total = 0;
+};
+
+struct NoSteinerResult {
+  // vertices: the input vertices first, in input order (ids preserved), then
+  // the interior ones; triangles counter-clockwise with triangle_markers =
+  // kRegion*; edges = the input segments (loop order) with the input segment
+  // markers when the input has them.
+  TriMesh2 mesh;
+  NoSteinerStats stats;
+};
+
+NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, const NoSteinerOptions& options = {});
+
+}  // namespace pqmesh

@@ -1,0 +1,163 @@
+// Thesis §5.4 "Matching R to Q" assembled (match_qr.hpp): the match figures,
+// the square vertices of each, and the triangles of Q \ R on that vertex set.
+//
+// Invariants of the output: every Steiner point lies strictly inside Q \ R
+// (kept only when exact orient2d tests put it in the closure of its figure,
+// or of the neighbouring figure across the match edge it was put on, and
+// strictly off dQ and dR), no two points share coordinates, and the
+// triangles are the constrained Delaunay triangulation of Q \ R with dQ's
+// sides (unsplit) and dR's mesh edges as constraints, so they conform to
+// Q^c along dQ and to R's mesh along dR.
+#include "nosteiner2d/match_qr.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include "cdt2d/constrained_delaunay.hpp"
+#include "nosteiner2d/match_figures.hpp"
+#include "nosteiner2d/match_squares.hpp"
+#include "nosteiner2d/triangle_angles.hpp"
+#include "pqmesh/errors.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::detail {
+
+namespace {
+
+// x in the closed figure minus E and F (exact). Outline p -> q -> b -> a
+// (triangle: V -> b -> a).
+bool in_figure(const MatchFigure& f, Vec2 x) {
+  if (orient2d(f.b, f.a, x) != Sign::Positive) return false;          // strictly off F (into Q \ R)
+  if (orient2d(f.a, f.p, x) == Sign::Negative) return false;          // match edge at a
+  if (f.is_triangle) return orient2d(f.p, f.b, x) != Sign::Negative;  // match edge at b
+  return orient2d(f.q, f.b, x) != Sign::Negative && orient2d(f.p, f.q, x) == Sign::Positive;  // at b; off E
+}
+
+double interior_angle(Vec2 at, Vec2 u, Vec2 v) { return angle_between(u - at, v - at); }
+
+}  // namespace
+
+MatchQR match_q_to_r(const PolygonQ& q, const PolygonR& r, const TriMesh2& r_mesh, const MatchOptions& options) {
+  MatchQR out;
+  MatchStats& st = out.stats;
+  const int nq = int(q.wedges.vertices.size());
+  const int nr = int(r_mesh.vertices.size());
+  const std::vector<MatchFigure> figs = match_figures(q, r, r_mesh);
+
+  // The CDT's points: dQ, then dR's mesh vertices, then the square vertices.
+  cdt2d::CdtInput in;
+  std::vector<int> combined;                    // CDT point -> combined id
+  std::vector<double> scale;                    // CDT point -> smallest figure scale it belongs to
+  std::map<std::pair<double, double>, int> at;  // coordinates -> CDT point
+  std::map<int, int> local;                     // combined id of a dQ / dR vertex -> CDT point
+  auto add_fixed = [&](int id, Vec2 x) {
+    if (local.contains(id)) return local[id];
+    const int k = int(in.points.size());
+    if (!at.emplace(std::pair{x.x, x.y}, k).second) throw InternalError("match_q_to_r: dQ and dR share a point");
+    in.points.push_back(x);
+    combined.push_back(id);
+    scale.push_back(std::numeric_limits<double>::infinity());
+    local[id] = k;
+    return k;
+  };
+  for (const auto& loop : q.loops)
+    for (int v : loop) add_fixed(v, q.wedges.vertices[std::size_t(v)]);
+  for (const auto& f : figs)
+    for (std::size_t i = 0; i < f.f.size(); ++i) add_fixed(f.f_ids[i], f.f[i]);
+
+  // Constraints: dQ's sides (Q's interior, hence Q \ R, on the left) and
+  // dR's mesh edges reversed (R's interior was on their left).
+  for (const auto& loop : q.loops)
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      in.constraints.push_back({local[loop[k]], local[loop[(k + 1) % loop.size()]]});
+  for (const auto& f : figs)
+    for (std::size_t i = 0; i + 1 < f.f_ids.size(); ++i)
+      in.constraints.push_back({local[f.f_ids[i + 1]], local[f.f_ids[i]]});
+  const std::size_t fixed = in.points.size();
+
+  st.min_delta_over_length = std::numeric_limits<double>::infinity();
+  st.min_match_angle = std::numeric_limits<double>::infinity();
+  st.min_elongation = std::numeric_limits<double>::infinity();
+  for (const auto& f : figs) {
+    (f.is_triangle ? st.triangles_fig : st.trapezoids) += 1;
+    if (!f.is_triangle) st.min_delta_over_length = std::min(st.min_delta_over_length, f.scale);
+    for (const double ang : {interior_angle(f.a, f.b, f.p), interior_angle(f.b, f.a, f.q)}) {
+      st.min_match_angle = std::min(st.min_match_angle, ang);
+      st.max_match_angle = std::max(st.max_match_angle, ang);
+    }
+    for (int id : {f.p_id, f.q_id}) scale[std::size_t(local[id])] = std::min(scale[std::size_t(local[id])], f.scale);
+    for (int id : f.f_ids) scale[std::size_t(local[id])] = std::min(scale[std::size_t(local[id])], f.scale);
+
+    const SquareDrawing d = draw_squares(f);
+    st.squares += d.squares;
+    st.max_steps = std::max(st.max_steps, d.steps);
+    st.level_raises += d.level_raises;
+    st.lemma41_violations += d.lemma41_violations;
+    st.max_elongation_inner = std::max(st.max_elongation_inner, d.max_elongation_inner);
+    st.max_elongation_right = std::max(st.max_elongation_right, d.max_elongation_right);
+    if (d.squares > 0) st.min_elongation = std::min(st.min_elongation, d.min_elongation);
+    for (const SquarePoint& sp : d.points) {
+      ++st.candidates;
+      bool inside = in_figure(f, sp.point);
+      if (!inside && sp.on == SquarePoint::On::StartEdge) inside = in_figure(figs[std::size_t(f.prev)], sp.point);
+      if (!inside && sp.on == SquarePoint::On::EndEdge) inside = in_figure(figs[std::size_t(f.next)], sp.point);
+      if (!inside) {
+        ++st.dropped;
+        continue;
+      }
+      // The same point from the figure across a match edge (both put their
+      // corners at the same heights t = 2^-j on it when the match edge is
+      // shared with the same ends) is one vertex.
+      const auto [it, added] = at.emplace(std::pair{sp.point.x, sp.point.y}, int(in.points.size()));
+      if (!added) {
+        ++st.shared;
+        scale[std::size_t(it->second)] = std::min(scale[std::size_t(it->second)], f.scale);
+        continue;
+      }
+      in.points.push_back(sp.point);
+      combined.push_back(nq + nr + int(out.points.size()));
+      scale.push_back(f.scale);
+      out.points.push_back(sp.point);
+    }
+  }
+  if (st.squares == 0) st.min_elongation = 0;
+  if (figs.empty()) st.min_match_angle = st.min_delta_over_length = 0;
+
+  // The construction's triangles, then (a measurement, and the alternative
+  // of MatchOptions::keep_better) the same region without the square vertices.
+  const cdt2d::CdtOutput tri = cdt2d::constrained_delaunay(in, /*keep_inside=*/true);
+  st.squares_min_angle = std::numeric_limits<double>::infinity();
+  st.min_angle_over_scale = std::numeric_limits<double>::infinity();
+  out.triangles.reserve(tri.triangles.size());
+  for (const auto& t : tri.triangles) {
+    const double ang =
+        min_angle(in.points[std::size_t(t[0])], in.points[std::size_t(t[1])], in.points[std::size_t(t[2])]);
+    st.squares_min_angle = std::min(st.squares_min_angle, ang);
+    const double s = std::min({scale[std::size_t(t[0])], scale[std::size_t(t[1])], scale[std::size_t(t[2])]});
+    st.min_angle_over_scale = std::min(st.min_angle_over_scale, ang / s);
+    out.triangles.push_back({combined[std::size_t(t[0])], combined[std::size_t(t[1])], combined[std::size_t(t[2])]});
+  }
+  if (out.triangles.empty()) st.squares_min_angle = st.min_angle_over_scale = 0;
+
+  in.points.resize(fixed);
+  const cdt2d::CdtOutput plain = cdt2d::constrained_delaunay(in, true);
+  st.cdt_min_angle = std::numeric_limits<double>::infinity();
+  for (const auto& t : plain.triangles)
+    st.cdt_min_angle = std::min(st.cdt_min_angle, min_angle(in.points[std::size_t(t[0])], in.points[std::size_t(t[1])],
+                                                            in.points[std::size_t(t[2])]));
+  st.min_angle = st.squares_min_angle;
+  if (options.keep_better && st.cdt_min_angle > st.squares_min_angle) {
+    st.used_plain_cdt = true;
+    st.min_angle = st.cdt_min_angle;
+    out.points.clear();
+    out.triangles.clear();
+    for (const auto& t : plain.triangles)
+      out.triangles.push_back({combined[std::size_t(t[0])], combined[std::size_t(t[1])], combined[std::size_t(t[2])]});
+  }
+  return out;
+}
+
+}  // namespace pqmesh::detail

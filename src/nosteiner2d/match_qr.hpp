@@ -1,0 +1,110 @@
+#pragma once
+// Thesis §5.4 "Matching R to Q": the triangles of Q \ R (the region between
+// dQ and dR), with Steiner points only strictly inside Q \ R. dQ is kept
+// unsplit (the thesis adds "Steiner points to a figure's interior and to its
+// sides, but not to any edge of R or Q"), so Q^c needs no change; dR keeps
+// exactly the subdivision of R's mesh.
+//
+// Stages (docs/ALGORITHM.md §11.x "Matching R to Q"; src/nosteiner2d/match_*.cpp):
+//  1. match_figures.cpp: the match edges (each Q vertex to its R vertices)
+//     cut Q \ R into one match trapezoid per Q side E (E, its shrunk side F)
+//     and one match triangle per Case 2 Q vertex (§5.4 "Match faces"); the
+//     mesh vertices of R on F, in order, are read off R's mesh boundary.
+//  2. match_squares.cpp: per figure, the square drawing of §5.4.1 with
+//     levels (balanced) and elongation (Lemmas 38-42): guide lines M_j at
+//     the fraction 2^-j of the way from F to E (height d / 2^j in a
+//     trapezoid), the squares of step i with their top on M_{n-i+1}; square
+//     corners on a match edge are put on the match edge ("we use the match
+//     edge for a side"). Match triangles (§5.4.2) use the same drawing with
+//     the apex as both Q ends. n is chosen from the edges on F
+//     (match_squares.hpp).
+//  3. match_qr.cpp: the triangles. The vertex set is dQ, R's mesh vertices on
+//     dR and the square vertices; the connectivity is the constrained
+//     Delaunay triangulation of Q \ R on that vertex set, with every side of
+//     dQ and every mesh edge of dR as a constraint (deviation from the
+//     per-square fans of Figs. 5.19-5.21; by Lawson's optimality it has a
+//     min angle at least that of any triangulation of the same vertices
+//     with the same constraints, the thesis's among them). Match edges are
+//     not constraints: the figures on the two sides of a match edge put
+//     their corners on it at heights 2^-j, and equal heights give the same
+//     rounded point, which is one vertex ("adjacent figures share sides").
+//
+// Exactness (DESIGN.md §3): constructions (square vertices) are rounded;
+// every decision on them is exact: a square vertex is kept only when
+// orient2d puts it in the closure of its figure, or of its neighbour across
+// the match edge it was put on, strictly off dQ and dR; a point with the
+// coordinates of a kept one is that vertex. Levels are a construction choice
+// from rounded lengths, not a geometric decision.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pqmesh/mesh.hpp"
+#include "pqmesh/nosteiner.hpp"
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::detail {
+
+struct MatchStats {
+  std::int64_t trapezoids = 0, triangles_fig = 0;  // match trapezoids / match triangles (figures)
+  std::int64_t squares = 0;                        // squares drawn (§5.4.1), all figures
+  std::int64_t candidates = 0;                     // square vertices constructed
+  std::int64_t dropped = 0;                        // of those, not strictly inside Q \ R (rounding)
+  std::int64_t shared = 0;                         // of those, already given (the same point on a match edge)
+  int max_steps = 0;                               // largest n (guide lines) of one figure
+  // Elongation (Lemmas 38, 39, 42) over all squares: max over squares not at
+  // the right end of F, max at the right end, min over all.
+  double max_elongation_inner = 0, max_elongation_right = 0, min_elongation = 0;
+  std::int64_t lemma41_violations = 0;  // items not drawn around at step l or l+1 (l = their level)
+  std::int64_t level_raises = 0;        // triangulation edges whose length level was raised for balance
+  double min_angle = 0;                 // radians, over the returned triangles
+  // (The fields below describe §5.4's construction, also when the plain CDT is returned.)
+  double min_delta_over_length = 0;  // min over trapezoids of delta(E)/L(E) (Lemmas 45-46 scale)
+  // Lemmas 45-47 measured: min over triangles of angle / scale, where the
+  // scale of a triangle is the smallest MatchFigure::scale (delta(E)/L(E))
+  // over the figures its vertices belong to.
+  double min_angle_over_scale = 0;
+  // Lemmas 43-44: the interior angles of the figures at R's vertices, i.e.
+  // between a match edge and F (radians): min (>= pi/4 + kA) and max (<= pi - kA).
+  double min_match_angle = 0, max_match_angle = 0;
+  double cdt_min_angle = 0;      // the CDT of Q \ R without the square vertices (no square vertices)
+  double squares_min_angle = 0;  // the CDT with the square vertices (§5.4's construction)
+  bool used_plain_cdt = false;   // the output is the plain CDT (MatchOptions::keep_better)
+};
+
+struct MatchOptions {
+  // Return the plain CDT of Q \ R (no Steiner point) instead when its min
+  // angle is strictly larger than that of §5.4's construction (an addition
+  // to the thesis: it only raises the min angle, so the bound of Lemmas
+  // 45-47 still holds for the output).
+  bool keep_better = true;
+};
+
+// Always empty: dQ is never split (kept for the caller's assembly).
+struct QSideSplit {
+  int loop = -1, side = -1;  // Q loop and side k -> k+1
+  std::vector<Vec2> points;  // split points in order from k to k+1
+};
+
+struct MatchQR {
+  // Steiner points, all strictly inside Q \ R.
+  std::vector<Vec2> points;
+  // Counter-clockwise triangles covering exactly the closure of Q \ R. Ids:
+  //   [0, nq)              q.wedges.vertices (nq = its size; dQ = q.loops);
+  //   [nq, nq + nr)        r_mesh.vertices[id - nq] (nr = its size);
+  //   [nq + nr, ...)       points[id - nq - nr].
+  // This is the numbering of "Q^c vertices, then R's mesh vertices, then the
+  // rest", so the caller appends `points` and the triangles as they are.
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<QSideSplit> q_side_splits;  // empty (see above)
+  MatchStats stats;
+};
+
+// q: Q with Q^c (polygon_q). r: shrink_q_to_r(q_loop_points(q)) (valid,
+// representable). r_mesh: a mesh of polygon_r_domain(r) (quad_mesh(...).mesh),
+// whose vertices include R's loop vertices with identical coordinates.
+// Throws InternalError when R's mesh boundary does not pass through R's loop
+// vertices in loop order, or when the CDT fails (dQ and dR meet).
+MatchQR match_q_to_r(const PolygonQ& q, const PolygonR& r, const TriMesh2& r_mesh, const MatchOptions& options = {});
+
+}  // namespace pqmesh::detail

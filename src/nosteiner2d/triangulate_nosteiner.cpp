@@ -1,0 +1,235 @@
+// Thesis ch. 5 assembled: Q^c + (dQ to dR) + the mesh of R, with the
+// documented fallbacks (include/pqmesh/nosteiner.hpp, docs/ALGORITHM.md §11.10).
+//
+// Invariant of every path: the vertices on dP are exactly the input vertices
+// (ids 0..n-1 of the output, in input order). Full: Q^c keeps the input
+// vertices first and adds spoke ends strictly inside P (polygon_q); R's mesh
+// lies inside Q and the matching adds points only strictly inside Q \ R. QOnly: the CDT of Q adds no point. Cdt: the
+// CDT of P adds no point. verify turns this argument into a check.
+#include <chrono>
+#include <exception>
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "cdt2d/constrained_delaunay.hpp"
+#include "nosteiner2d/match_qr.hpp"
+#include "nosteiner2d/triangle_angles.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/nosteiner.hpp"
+
+namespace pqmesh {
+
+const char* to_string(NoSteinerPath path) {
+  switch (path) {
+    case NoSteinerPath::Full: return "full";
+    case NoSteinerPath::QOnly: return "q-only";
+    case NoSteinerPath::Cdt: return "cdt";
+    case NoSteinerPath::CdtBetter: return "cdt-better";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void add(TriMesh2& mesh, const std::vector<std::array<int, 3>>& triangles, int marker, int offset = 0) {
+  for (auto t : triangles) {
+    for (int& v : t) v += offset;
+    mesh.triangles.push_back(t);
+    mesh.triangle_markers.push_back(marker);
+  }
+}
+
+// Q^c + the CDT of Q (QOnly). Throws when dQ is not a set of disjoint simple loops.
+TriMesh2 q_only(const PolygonQ& q) {
+  cdt2d::CdtInput in;
+  in.points = q.wedges.vertices;
+  for (const auto& loop : q.loops)
+    for (std::size_t k = 0; k < loop.size(); ++k) in.constraints.push_back({loop[k], loop[(k + 1) % loop.size()]});
+  TriMesh2 mesh;
+  mesh.vertices = q.wedges.vertices;
+  add(mesh, q.wedges.triangles, kRegionWedges);
+  add(mesh, cdt2d::constrained_delaunay(in, true).triangles, kRegionQCdt);
+  return mesh;
+}
+
+// The CDT of P puts only the referenced points in its triangles; an input
+// vertex is on some triangle of any triangulation of P, so none is unused.
+TriMesh2 p_cdt(const Domain2& domain) {
+  TriMesh2 mesh = steiner_free_cdt(domain);
+  mesh.triangle_markers.assign(mesh.triangles.size(), kRegionPCdt);
+  return mesh;
+}
+
+double region_min_angle(const TriMesh2& mesh, int marker, std::int64_t& count) {
+  double m = 0;
+  count = 0;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    if (mesh.triangle_markers[i] != marker) continue;
+    const auto& t = mesh.triangles[i];
+    const double a = detail::min_angle(mesh.vertices[std::size_t(t[0])], mesh.vertices[std::size_t(t[1])],
+                                       mesh.vertices[std::size_t(t[2])]);
+    m = count++ == 0 ? a : std::min(m, a);
+  }
+  return m;
+}
+
+bool passes(const TriMesh2& mesh, const Domain2& domain, std::string& why) {
+  const CheckReport r = check_mesh(mesh, domain, CheckOptions{.no_boundary_steiner = true, .max_issues_per_kind = 3});
+  if (r.valid()) return true;
+  why = r.issues.empty() ? std::string("check failed") : r.issues.front().message;
+  return false;
+}
+
+}  // namespace
+
+NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, const NoSteinerOptions& options) {
+  const auto start = Clock::now();
+  NoSteinerResult out;
+  NoSteinerStats& st = out.stats;
+  auto t = Clock::now();
+  const SteinerFreeBound bound = steiner_free_bound(domain);  // the thesis's definition, reported
+  st.g = bound.g;
+  st.upper_bound = bound.upper_bound();
+  st.seconds_bound = since(t);
+
+  // Each stage either succeeds or records why the next fallback is taken.
+  std::string reason;
+  std::optional<PolygonQ> q;
+  t = Clock::now();
+  try {
+    // Q needs interference through the far end (SteinerFreeOptions, §11.7).
+    PolygonQ built = polygon_q(domain, steiner_free_bound(domain, {.sides_at_far_end = true}));
+    if (built.representable)
+      q = std::move(built);
+    else
+      reason = "Q not representable in doubles (spiral depth, docs/ALGORITHM.md 11.6)";
+  } catch (const std::exception& ex) {
+    reason = std::string("Q failed: ") + ex.what();
+  }
+  st.seconds_q = since(t);
+
+  TriMesh2 mesh;
+  st.path = NoSteinerPath::Cdt;
+  if (q) {
+    st.q_vertices = 0;
+    for (const auto& loop : q->loops) st.q_vertices += std::int64_t(loop.size());
+    bool full = false;
+    t = Clock::now();
+    std::optional<QuadMeshResult> r_mesh;
+    PolygonR r;
+    try {
+      r = shrink_q_to_r(q_loop_points(*q));
+      if (!r.valid)
+        reason = "R invalid: " + r.failure;
+      else if (!r.representable)
+        reason = "R below double resolution (docs/ALGORITHM.md 11.8)";
+      else
+        r_mesh = quad_mesh(polygon_r_domain(r), options.r_mesh);
+    } catch (const std::exception& ex) {
+      reason = std::string("R failed: ") + ex.what();
+    }
+    st.seconds_r = since(t);
+    if (r_mesh) {
+      t = Clock::now();
+      try {
+        mesh.vertices = q->wedges.vertices;
+        add(mesh, q->wedges.triangles, kRegionWedges);
+        const int offset = int(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), r_mesh->mesh.vertices.begin(), r_mesh->mesh.vertices.end());
+        add(mesh, r_mesh->mesh.triangles, kRegionR, offset);
+        // §5.4: match trapezoids and triangles with square drawing (match_qr.hpp).
+        const auto between = detail::match_q_to_r(*q, r, r_mesh->mesh);
+        mesh.vertices.insert(mesh.vertices.end(), between.points.begin(), between.points.end());
+        add(mesh, between.triangles, kRegionBetween);
+        // Vertices on dR: R's mesh vertices on a Q-to-R triangle.
+        std::vector<char> on_dr(r_mesh->mesh.vertices.size(), 0);
+        for (const auto& tri : between.triangles)
+          for (int v : tri)
+            if (v >= offset && v < offset + int(on_dr.size())) on_dr[std::size_t(v - offset)] = 1;
+        for (char c : on_dr) st.r_vertices += c;
+        full = true;
+      } catch (const std::exception& ex) {
+        reason = std::string("Q to R failed: ") + ex.what();
+      }
+      st.seconds_between = since(t);
+    }
+    if (full && options.verify) {
+      t = Clock::now();
+      std::string why;
+      if (!passes(mesh, domain, why)) {
+        full = false;
+        reason = "full mesh failed the check: " + why;
+      }
+      st.seconds_verify += since(t);
+    }
+    if (full) {
+      st.path = NoSteinerPath::Full;
+    } else {
+      try {
+        mesh = q_only(*q);
+        st.path = NoSteinerPath::QOnly;
+        if (options.verify) {
+          t = Clock::now();
+          std::string why;
+          if (!passes(mesh, domain, why)) {
+            st.path = NoSteinerPath::Cdt;
+            reason += "; Q-only mesh failed the check: " + why;
+          }
+          st.seconds_verify += since(t);
+        }
+      } catch (const std::exception& ex) {
+        reason += std::string("; CDT of Q failed: ") + ex.what();
+      }
+    }
+  }
+  if (st.path == NoSteinerPath::Cdt) mesh = p_cdt(domain);
+  st.fallback_reason = st.path == NoSteinerPath::Full ? std::string() : reason;
+  st.pipeline_path = st.path;
+  st.pipeline_min_angle = min_triangle_angle(mesh);
+  st.pipeline_triangles = std::int64_t(mesh.triangles.size());
+  st.pipeline_vertices = std::int64_t(mesh.vertices.size());
+  if (options.compare_cdt) {
+    t = Clock::now();
+    TriMesh2 cdt = p_cdt(domain);
+    st.cdt_min_angle = min_triangle_angle(cdt);
+    st.seconds_cdt = since(t);
+    if (options.keep_better_cdt && st.path != NoSteinerPath::Cdt && st.cdt_min_angle > st.pipeline_min_angle) {
+      st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") + "the CDT of P has the larger min angle (" + std::to_string(st.cdt_min_angle) +
+                           " rad against " + std::to_string(st.pipeline_min_angle) + " rad from " +
+                           to_string(st.path) + ")";
+      st.path = NoSteinerPath::CdtBetter;
+      mesh = std::move(cdt);
+    }
+  }
+
+  // The input segments as the boundary edges (no Steiner point: one mesh edge each).
+  for (std::size_t l = 0; l < domain.loops.size(); ++l)
+    for (std::size_t k = 0; k < domain.loops[l].size(); ++k) {
+      mesh.edges.push_back({domain.loops[l][k], domain.loops[l][(k + 1) % domain.loops[l].size()]});
+      if (!domain.pslg.segment_markers.empty())
+        mesh.edge_markers.push_back(domain.pslg.segment_markers[std::size_t(domain.loop_segments[l][k])]);
+    }
+
+  st.triangles = std::int64_t(mesh.triangles.size());
+  st.vertices = std::int64_t(mesh.vertices.size());
+  st.min_angle = min_triangle_angle(mesh);
+  st.ratio = st.g > 0 ? st.min_angle / st.g : 0;
+  std::int64_t n = 0;
+  st.wedge_min_angle = region_min_angle(mesh, kRegionWedges, st.wedge_triangles);
+  st.between_min_angle = region_min_angle(mesh, kRegionBetween, st.between_triangles);
+  st.r_min_angle = region_min_angle(mesh, kRegionR, st.r_triangles);
+  region_min_angle(mesh, kRegionQCdt, n);
+  st.cdt_triangles = n;
+  region_min_angle(mesh, kRegionPCdt, n);
+  st.cdt_triangles += n;
+  out.mesh = std::move(mesh);
+  st.seconds_total = since(start);
+  return out;
+}
+
+}  // namespace pqmesh

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# pqmesh mesh --no-boundary-steiner (thesis ch. 5): every data/2d input is
+# meshed, the summary has its lines, the written mesh passes
+# 'pqmesh check --no-boundary-steiner' on its own, and failures write nothing.
+# usage: nosteiner_test.sh PQMESH_BINARY DATA_DIR FIXTURE_DIR
+set -u
+pqmesh=$1 data=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+ok() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+expect() {  # expect CODE DESCRIPTION -- COMMAND...
+  local want=$1 what=$2
+  shift 3
+  "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [[ $got -eq $want ]]; then ok; else fail "$what: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"; fi
+}
+contains() {  # contains FILE PATTERN DESCRIPTION
+  if grep -qE -- "$2" "$1"; then ok; else fail "$3: '$2' not in $(head -c 600 "$1")"; fi
+}
+
+for f in "$data"/2d/*.poly; do
+  b=$(basename "$f" .poly)
+  expect 0 "mesh --no-boundary-steiner $b" -- "$pqmesh" mesh "$f" -o "$work/$b.vtu" --no-boundary-steiner
+  cp "$work/out" "$work/$b.summary"
+  contains "$work/$b.summary" "^bound g +g\(P\) = [0-9.e+-]+ deg; .* <= min\(60, 5\.319 \* g\) = " "g line $b"
+  contains "$work/$b.summary" "^angles +min [0-9.e+-]+ deg; achieved / g = " "angles line $b"
+  contains "$work/$b.summary" "^cdt +constrained Delaunay .* min [0-9.e+-]+ deg" "cdt line $b"
+  contains "$work/$b.summary" "^path +(full|q-only|cdt|cdt-better)" "path line $b"
+  contains "$work/$b.summary" "^check +valid \(no boundary Steiner\)" "check line $b"
+  # The written file, checked independently by the checker subcommand.
+  expect 0 "check --no-boundary-steiner $b" -- "$pqmesh" check "$work/$b.vtu" --domain "$f" --no-boundary-steiner
+done
+
+# --fixed-boundary is accepted (the plain mode already keeps the boundary), --quiet prints nothing.
+expect 0 "fixed-boundary synonym" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/fb.vtu" --no-boundary-steiner --fixed-boundary --quiet
+[[ -s $work/out ]] && fail "--quiet printed: $(head -c 200 "$work/out")" || ok
+# A straight angle on the boundary (subdivided side) is kept: the checker finds no boundary Steiner point.
+printf '5 2 0 0\n1 0 0\n2 1 0\n3 2 0\n4 2 1\n5 0 1\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n0\n' >"$work/straight.poly"
+expect 0 "straight angle" -- "$pqmesh" mesh "$work/straight.poly" -o "$work/straight.vtu" --no-boundary-steiner
+expect 0 "straight angle check" -- "$pqmesh" check "$work/straight.vtu" --domain "$work/straight.poly" --no-boundary-steiner
+
+# Failures write nothing: a missing -o, a bad option value, an invalid input.
+expect 64 "missing -o" -- "$pqmesh" mesh "$data/2d/square.poly" --no-boundary-steiner
+expect 64 "bad --refine-angle" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/bad.vtu" --no-boundary-steiner --refine-angle 45
+[[ -e $work/bad.vtu ]] && fail "output written after a usage error" || ok
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/flat.poly"
+expect 2 "degenerate input" -- "$pqmesh" mesh "$work/flat.poly" -o "$work/flat.vtu" --no-boundary-steiner
+[[ -e $work/flat.vtu ]] && fail "output written for an invalid input" || ok
+
+echo "nosteiner cli: $passed passed, $failed failed"
+((failed == 0))

@@ -1,0 +1,137 @@
+// The no-boundary-Steiner triangulation (thesis ch. 5 assembled) on data/2d
+// and on the hard cases of issue 6 item 3. Every output passes check_mesh with
+// the no-boundary-Steiner check (nosteiner_run.hpp); the measured constant k
+// (achieved >= k g(P)) is asserted in triangulate_random_test.cpp over this
+// corpus and the random polygons, and its floor is also asserted here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "nosteiner_run.hpp"
+#include "pqmesh/read_domain.hpp"
+#include "support/paths.hpp"
+
+namespace pqmesh {
+namespace {
+
+// Measured floor of achieved / g(P) (docs/ALGORITHM.md §11.12), rounded down.
+// With the §5.4 matching the smallest measured value is 0.0063 (the regular
+// 1000-gon, where g is nearly pi); on data/2d 0.026 (comb). The floor guards
+// against regressions.
+constexpr double kMeasuredK = 5e-3;
+
+Pslg2 loops_pslg(const std::vector<std::vector<Vec2>>& loops) {
+  Pslg2 p;
+  for (const auto& loop : loops) {
+    const int base = int(p.vertices.size()), n = int(loop.size());
+    for (int i = 0; i < n; ++i) {
+      p.vertices.push_back(loop[std::size_t(i)]);
+      p.segments.push_back({base + i, base + (i + 1) % n});
+    }
+  }
+  return p;
+}
+
+Domain2 polygon(const std::vector<Vec2>& pts) { return make_domain(loops_pslg({pts})); }
+
+void run(const Domain2& d, const std::string& what, test::RunStats& st) {
+  const NoSteinerResult res = test::run_and_check(d, what, st);
+  const NoSteinerStats& s = res.stats;
+  EXPECT_GE(s.pipeline_min_angle, kMeasuredK * s.g) << what;
+  constexpr double deg = 180 / std::numbers::pi;
+  std::printf("  %-26s g %8.4f, pipeline %9.5f (%s, ratio %.3g), cdt %8.4f, output %s %lld tri%s%s\n", what.c_str(),
+              s.g * deg, s.pipeline_min_angle * deg, to_string(s.pipeline_path), s.pipeline_min_angle / s.g,
+              s.cdt_min_angle * deg, to_string(s.path), static_cast<long long>(s.triangles),
+              s.pipeline_path == NoSteinerPath::Full ? "" : "; ",
+              s.pipeline_path == NoSteinerPath::Full ? "" : s.fallback_reason.substr(0, 90).c_str());
+}
+
+TEST(NoSteinerTriangulation, Corpus) {
+  test::RunStats st;
+  for (const char* name :
+       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
+    run(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st);
+  test::print(st, "data/2d");
+}
+
+// The default options (verify, keep_better_cdt) as the CLI runs them: valid,
+// no boundary Steiner point, never below the CDT of P (by construction).
+TEST(NoSteinerTriangulation, CorpusDefaultOptions) {
+  test::RunStats st;
+  for (const char* name :
+       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
+    test::run_and_check(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st,
+                        NoSteinerOptions{});
+  test::print(st, "data/2d, default options");
+}
+
+// Issue 6 item 3's hard cases (dyadic coordinates unless said otherwise).
+TEST(NoSteinerTriangulation, HardCases) {
+  test::RunStats st;
+  // Thesis Fig. 1.1: a thin trapezoid whose long edge faces close vertices.
+  for (double t : {1.0 / 64, 1.0 / 1024})
+    run(polygon({{0, 0}, {1, 0}, {0.5625, t}, {0.4375, t}}), "fig1.1 trapezoid t=" + std::to_string(t), st);
+  // A reflex vertex very close to the middle of a long edge (the notch).
+  for (double y : {1.0 / 128, 1.0 / 4096})
+    run(polygon({{0, 0}, {1, 0}, {1, 1}, {0.625, 1}, {0.484375, y}, {0.375, 1}, {0, 1}}),
+        "reflex notch y=" + std::to_string(y), st);
+  // A comb with narrow slots: 8 teeth of width 1/16, slots 1/512 wide, 1/2 deep.
+  {
+    std::vector<Vec2> c = {{0, 0}, {1, 0}};
+    const double tooth = 1.0 / 16, slot = 1.0 / 512;
+    double x = 1;
+    c.push_back({1, 1});
+    for (int i = 0; i < 8; ++i) {
+      x -= tooth;
+      if (i == 7) break;
+      c.push_back({x, 1});
+      c.push_back({x, 0.5});
+      x -= slot;
+      c.push_back({x, 0.5});
+      c.push_back({x, 1});
+    }
+    c.push_back({x, 1});
+    c.push_back({0, 1});
+    run(polygon(c), "comb narrow slots", st);
+  }
+  // Small-angle spikes: a star of 12 spikes with tips at radius 1 and
+  // valleys at 1/4 (tip angles ~6 deg), plus one 0.5-degree spike.
+  {
+    std::vector<Vec2> s;
+    for (int i = 0; i < 24; ++i) {
+      const double a = std::numbers::pi * i / 12, r = i % 2 == 0 ? 1.0 : 0.25;
+      s.push_back({std::ldexp(std::round(std::ldexp(r * std::cos(a), 30)), -30),
+                   std::ldexp(std::round(std::ldexp(r * std::sin(a), 30)), -30)});
+    }
+    run(polygon(s), "star 12 spikes", st);
+    const double h = std::tan(0.25 * std::numbers::pi / 180);
+    run(polygon({{0, -h}, {1, 0}, {0, h}, {-0.5, 0.5}, {-0.5, -0.5}}), "spike 0.5 deg", st);
+  }
+  // Many holes: an 8 x 8 grid of square holes (64 holes) in the unit square.
+  {
+    std::vector<std::vector<Vec2>> loops = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) {
+        const double x = (i + 0.25) / 8, y = (j + 0.25) / 8, w = 0.5 / 8;
+        loops.push_back({{x, y}, {x, y + w}, {x + w, y + w}, {x + w, y}});
+      }
+    Pslg2 p = loops_pslg(loops);
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) p.holes.push_back({(i + 0.5) / 8, (j + 0.5) / 8});
+    run(make_domain(p), "64 square holes", st);
+  }
+  // Regular 1000-gon (rounded cos/sin; make_domain validates it).
+  {
+    std::vector<Vec2> pts;
+    for (int i = 0; i < 1000; ++i)
+      pts.push_back({std::cos(2 * std::numbers::pi * i / 1000), std::sin(2 * std::numbers::pi * i / 1000)});
+    run(polygon(pts), "regular 1000-gon", st);
+  }
+  test::print(st, "hard cases");
+}
+
+}  // namespace
+}  // namespace pqmesh

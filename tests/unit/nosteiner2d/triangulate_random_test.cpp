@@ -1,0 +1,43 @@
+// The no-boundary-Steiner triangulation on 300 seeded random polygons with
+// holes (tests/support/random_domains.hpp, the generator of the other ch. 5
+// tests): every output passes check_mesh with the no-boundary-Steiner check
+// (nosteiner_run.hpp), and the property achieved >= k g(P) holds for the
+// pipeline's mesh (before keep_better_cdt) with the measured k below.
+#include <gtest/gtest.h>
+
+#include "nosteiner_run.hpp"
+#include "support/random_domains.hpp"
+
+namespace pqmesh {
+namespace {
+
+// Measured floor of pipeline min angle / g(P) over data/2d, the hard cases and
+// these 300 polygons (docs/ALGORITHM.md §11.12), rounded down. A measured
+// constant of this implementation (§5.4 matching), not the thesis's.
+// Measured: 6.6e-6 (seed 258, QOnly fallback: R invalid, so Q is filled by
+// its CDT); over Full-path meshes alone 0.0122.
+constexpr double kMeasuredK = 5e-6;
+constexpr double kMeasuredKFull = 0.01;
+
+// Three shards of 100 seeds (ctest runs them as separate tests): R's quadtree
+// mesh costs ~0.1 s per polygon, ~35 s CPU for the 300.
+void run_seeds(std::uint64_t first, std::uint64_t last) {
+  test::RunStats st;
+  for (std::uint64_t seed = first; seed <= last; ++seed) {
+    const Domain2 d = make_domain(test::random_polygon_with_holes(seed));
+    const NoSteinerResult res = test::run_and_check(d, test::describe_polygon(seed), st);
+    const NoSteinerStats& s = res.stats;
+    EXPECT_GE(s.pipeline_min_angle, kMeasuredK * s.g) << test::describe_polygon(seed);
+    if (s.pipeline_path == NoSteinerPath::Full) {
+      EXPECT_GE(s.pipeline_min_angle, kMeasuredKFull * s.g) << test::describe_polygon(seed);
+    }
+  }
+  test::print(st, ("random polygons, seeds " + std::to_string(first) + "-" + std::to_string(last)).c_str());
+}
+
+TEST(NoSteinerTriangulation, RandomPolygonsWithHoles1to100) { run_seeds(1, 100); }
+TEST(NoSteinerTriangulation, RandomPolygonsWithHoles101to200) { run_seeds(101, 200); }
+TEST(NoSteinerTriangulation, RandomPolygonsWithHoles201to300) { run_seeds(201, 300); }
+
+}  // namespace
+}  // namespace pqmesh
