@@ -8,16 +8,15 @@ namespace pqmesh::tet3d {
 
 namespace {
 
-std::vector<std::int32_t> leaves_meeting_p(const mv3d::OctreeBuilder& builder) {
-  std::vector<std::int32_t> out;
-  for (const std::int32_t n : builder.leaves_by_id())
-    if (builder.data(n).has_component) out.push_back(n);
-  return out;
-}
+// Every leaf, also those missing P: the nesting argument of box_faces.hpp
+// needs the corners of all leaves tiling a split cell (a leaf outside P may be
+// the one with the square's centre as its corner; with only the leaves meeting
+// P, the two sides of a face could cut it into different squares).
+std::vector<std::int32_t> all_leaves(const mv3d::OctreeBuilder& builder) { return builder.leaves_by_id(); }
 
 }  // namespace
 
-CornerSet::CornerSet(const mv3d::OctreeBuilder& builder) : CornerSet(builder.tree(), leaves_meeting_p(builder)) {}
+CornerSet::CornerSet(const mv3d::OctreeBuilder& builder) : CornerSet(builder.tree(), all_leaves(builder)) {}
 
 CornerSet::CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves) {
   for (const std::int32_t n : leaves) {
@@ -61,6 +60,10 @@ void collect_squares(FaceSquare s, const CornerSet& corners, std::vector<FaceSqu
 }
 
 }  // namespace
+
+void split_square(const FaceSquare& s, const CornerSet& corners, std::vector<FaceSquare>& out) {
+  collect_squares(s, corners, out);
+}
 
 void face_squares(const BoxKey<3>& key, int axis, bool upper, const CornerSet& corners, std::vector<FaceSquare>& out) {
   if (!key.aligned()) throw InternalError("tet3d: face_squares on a merged (unaligned) key");

@@ -6,7 +6,7 @@
 // any sizes. Following §4.4 ("we always triangulate S by considering it a
 // facet of b', not b", h(b) >= h(b')), the face is cut into the squares S of
 // the finer side: recursively, a square is split into four while its centre
-// is a corner of some leaf meeting P (a leaf corner in the open square makes
+// is a corner of some leaf (a leaf corner in the open square makes
 // the leaf across smaller than the square, and then the square's centre is a
 // corner of the leaves tiling that smaller cell). The rule does not assume the
 // balance condition: protected boxes (§4.1.1) are exempt from it, so two
@@ -33,8 +33,8 @@
 
 namespace pqmesh::tet3d {
 
-// The corners of every leaf that meets P (NodeData3::has_component), the
-// points that split box faces and edges.
+// The corners of every leaf (from a builder: all leaves, also those missing
+// P; see box_faces.cpp), the points that split box faces and edges.
 class CornerSet {
  public:
   explicit CornerSet(const mv3d::OctreeBuilder& builder);
@@ -72,6 +72,11 @@ struct FaceSquare {
     return c;
   }
 };
+
+// The squares of the finer side inside the aligned square `s` (split into
+// four while its centre is in `corners`, as above), in a fixed order. Used for
+// faces of boxes that are no tree cells (a united vertex box, §4.5.2).
+void split_square(const FaceSquare& s, const CornerSet& corners, std::vector<FaceSquare>& out);
 
 // The squares of face (axis, upper) of the aligned box `key`, in a fixed order.
 void face_squares(const BoxKey<3>& key, int axis, bool upper, const CornerSet& corners, std::vector<FaceSquare>& out);

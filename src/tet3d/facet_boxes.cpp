@@ -8,14 +8,58 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "pqmesh/errors.hpp"
 #include "tet3d/cut_square.hpp"
+#include "tet3d/edge_point.hpp"
 #include "tet3d/facet_plane.hpp"
 #include "tet3d/point_book.hpp"
 #include "tet3d/warp.hpp"
 
 namespace pqmesh::tet3d {
+
+GridPoint united_lo(const BoxKey<3>& key, std::uint8_t block) {
+  GridPoint lo = key_corner(key, 0);
+  for (int a = 0; a < 3; ++a)
+    if ((block >> a) & 1) lo.f[static_cast<std::size_t>(a)] -= key.fine_side();
+  return lo;
+}
+
+void united_face_squares(const BoxKey<3>& key, std::uint8_t block, int axis, bool upper, const CornerSet& corners,
+                         std::vector<FaceSquare>& out) {
+  const std::int64_t fs = key.fine_side();
+  for (int k = 0; k < 4; ++k) {
+    FaceSquare s;
+    s.n = axis;
+    s.u = (axis + 1) % 3;
+    s.v = (axis + 2) % 3;
+    s.upper = upper;
+    s.lo = united_lo(key, block);
+    if (upper) s.lo.f[static_cast<std::size_t>(axis)] += 2 * fs;
+    s.lo.f[static_cast<std::size_t>(s.u)] += (k & 1) ? fs : 0;
+    s.lo.f[static_cast<std::size_t>(s.v)] += (k & 2) ? fs : 0;
+    s.side = fs;
+    split_square(s, corners, out);
+  }
+}
+
+void job_squares(const OctTree& tree, const CornerSet& corners, const BoxJob& job, std::vector<FaceSquare>& out) {
+  for (int axis = 0; axis < 3; ++axis)
+    for (const bool upper : {false, true}) {
+      if (job.kind == BoxKind::Vertex)
+        united_face_squares(tree.key(job.leaf), job.block, axis, upper, corners, out);
+      else
+        face_squares(tree.key(job.leaf), axis, upper, corners, out);
+    }
+}
+
+BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job) {
+  if (job.kind == BoxKind::FromFacet)
+    return squares.faces_of(job.facet < 0 ? BoxKind::Empty : BoxKind::Facet, job.facet);
+  return squares.faces_of(job.kind, job.apex);
+}
 
 namespace {
 
@@ -42,33 +86,17 @@ class Assembler {
   }
 
   void facet_box(std::int32_t leaf, int facet) {
-    const FacetPlane& plane = plane_of(facet);
+    const FacetPlane& plane = squares_.plane(facet);
     const BoxKey<3>& key = tree_.key(leaf);
-    // Face triangles of P ∧ b, right-hand normal out of the box (cut_square
-    // gives +n; a lower face's outward normal is -n).
+    // Face triangles of P ∧ b, right-hand normal out of the box.
     std::vector<Tri> tris;
-    for (int axis = 0; axis < 3; ++axis)
-      for (const bool upper : {false, true}) {
-        std::vector<FaceSquare> squares;
-        face_squares(key, axis, upper, corners_, squares);
-        const std::size_t first = tris.size();
-        for (const FaceSquare& s : squares) triangulate_cut_square(s, corners_, tree_, plane, book_, tris, warps_);
-        if (!upper)
-          for (std::size_t i = first; i < tris.size(); ++i) std::swap(tris[i][1], tris[i][2]);
-      }
+    box_tris(key, squares_.faces_of(BoxKind::Facet, facet), tris);
     // Edges of face triangles on F: the boundary of the polygon F ∩ b, keyed
     // by (smaller id, larger id), each kept with the direction a -> b it has
     // in its face triangle. Every such edge lies on the face triangles' side
     // of one box face, so it is in exactly one of them (the part of a face
     // beyond F yields no triangles).
-    std::map<std::pair<int, int>, std::pair<int, int>> chord;
-    for (const Tri& t : tris)
-      for (int i = 0; i < 3; ++i) {
-        const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-        if (!on_facet(a, plane) || !on_facet(b, plane)) continue;
-        if (!chord.emplace(std::pair{std::min(a, b), std::max(a, b)}, std::pair{a, b}).second)
-          throw InternalError("tet3d: edge on F in two face triangles of leaf " + std::to_string(leaf));
-      }
+    const auto chord = chords(leaf, tris, plane);
     const GridPoint centre = key_centre(key);
     const Vec3 C = grid_coordinates(tree_, centre);
     const double h = tree_.side(leaf);
@@ -76,18 +104,7 @@ class Assembler {
     if (d <= -h / 4) {
       const int v = centre_vertex(centre);
       for (const Tri& t : tris) cone(leaf, t, v);
-      std::set<int> poly;
-      for (const auto& [edge, directed] : chord) poly.insert({edge.first, edge.second});
-      Vec3 mean;
-      for (const int p : poly) mean = mean + book_.point(p);
-      mean = (1.0 / static_cast<double>(poly.size())) * mean;
-      const VertexKey gk{VertexKind::FacetCentre, centre, {}, facet};
-      const int g = book_.id(gk, [&] { return plane.settle(mean, dominant_axis(plane.normal())); });
-      // Fan of F ∩ b from g, coned to v. P ∧ b is convex and bounded by the
-      // outward face triangles and F ∩ b, so edge a -> b of a face triangle
-      // runs b -> a in F ∩ b oriented outward (away from v): (b, a, g) is an
-      // outward triangle with v inside, hence (a, b, g, v) is positive.
-      for (const auto& [edge, directed] : chord) tet(leaf, "fan", directed.first, directed.second, g, v);
+      fan(leaf, chord, plane, VertexKind::FacetCentre, centre, v);
       ++out_.stats.inside;
     } else if (d < h / 4) {
       const VertexKey vk{VertexKind::BoxOnFacet, centre, {}, facet};
@@ -100,6 +117,153 @@ class Assembler {
     }
   }
 
+  void edge_box(std::int32_t leaf, int edge) {
+    const BoxKey<3>& key = tree_.key(leaf);
+    std::vector<Tri> tris;
+    box_tris(key, squares_.faces_of(BoxKind::Edge, edge), tris);
+    const DomainEdge& e = domain_.edges.at(static_cast<std::size_t>(edge));
+    const Vec3 a = domain_.plc.vertices[static_cast<std::size_t>(e.a)];
+    const Vec3 b = domain_.plc.vertices[static_cast<std::size_t>(e.b)];
+    const Vec3 lo = grid_coordinates(tree_, key_corner(key, 0)), hi = grid_coordinates(tree_, key_corner(key, 7));
+    const auto [t0, t1] = clip_segment(a, b, lo, hi);
+    if (!(t0 < t1)) throw InternalError("tet3d: edge " + std::to_string(edge) + " misses edge box " + std::to_string(leaf));
+    const double tm = 0.5 * (t0 + t1);
+    const VertexKey vk{VertexKind::EdgeMidpoint, key_centre(key), {}, edge};
+    const int v = book_.id(vk, [&] { return round_onto_segment(a, b, a + tm * (b - a)); });
+    for (const Tri& t : tris) cone(leaf, t, v);
+    ++out_.stats.edge;
+  }
+
+  // The united box B of P vertex `vertex` (2x2x2 leaves of `leaf`'s size,
+  // extending below the leaf along the axes of `block`), coned from the vertex.
+  void vertex_box(std::int32_t leaf, int vertex, std::uint8_t block) {
+    const BoxKey<3>& key = tree_.key(leaf);
+    const std::int64_t fs = key.fine_side();
+    const GridPoint lo = united_lo(key, block);
+    const Vec3 p = domain_.plc.vertices.at(static_cast<std::size_t>(vertex));
+    {
+      GridPoint hi = lo;
+      for (int a = 0; a < 3; ++a) hi.f[static_cast<std::size_t>(a)] += 2 * fs;
+      const Vec3 L = grid_coordinates(tree_, lo), H = grid_coordinates(tree_, hi);
+      if (!(L.x < p.x && p.x < H.x && L.y < p.y && p.y < H.y && L.z < p.z && p.z < H.z))
+        throw InternalError("tet3d: vertex " + std::to_string(vertex) + " is not inside its united box (leaf " +
+                            std::to_string(leaf) + ")");
+    }
+    const BoxFaces faces = squares_.faces_of(BoxKind::Vertex, vertex);
+    std::vector<FaceSquare> squares;
+    for (int axis = 0; axis < 3; ++axis)
+      for (const bool upper : {false, true}) united_face_squares(key, block, axis, upper, corners_, squares);
+    const std::vector<Sign> hints = vertex_box_hints(squares, faces);
+    std::vector<Tri> tris;
+    for (std::size_t i = 0; i < squares.size(); ++i) {
+      const std::size_t first = tris.size();
+      squares_.triangulate(squares[i], faces, tris, hints[i]);
+      if (!squares[i].upper)
+        for (std::size_t k = first; k < tris.size(); ++k) std::swap(tris[k][1], tris[k][2]);
+    }
+    const VertexKey vk{VertexKind::PVertex, {}, {}, vertex};
+    const int v = book_.id(vk, [&] { return p; });
+    for (const Tri& t : tris) cone(leaf, t, v);
+    ++out_.stats.vertex;
+  }
+
+  // For the squares of a united box that meet no face of v's cone: inside or
+  // outside P, from a ring point shared with a square that meets a face,
+  // whose local model (square_cases.hpp local_status) is exact there; then
+  // propagated over the box surface through shared ring points (a square
+  // meeting no face lies wholly inside or outside, so all its ring points
+  // share its status). Zero where nothing is known (the dispatcher then
+  // falls back to locate()).
+  std::vector<Sign> vertex_box_hints(const std::vector<FaceSquare>& squares, const BoxFaces& faces) {
+    std::vector<SquareDispatcher::Incidence> inc;
+    std::vector<std::vector<GridPoint>> rings;
+    std::unordered_map<GridPoint, Sign, GridPointHash> status;
+    for (const FaceSquare& s : squares) {
+      inc.push_back(squares_.incidences(s, faces));
+      rings.push_back(square_ring(s, corners_));
+    }
+    for (std::size_t i = 0; i < squares.size(); ++i) {
+      const SquareDispatcher::Incidence& m = inc[i];
+      if (m.none() || !m.vertices.empty() || m.edges.size() > 1 || m.facets.size() > 2) continue;
+      if (m.facets.size() == 2 && squares_.edge_of_facets(m.facets[0], m.facets[1]) < 0) continue;
+      for (const GridPoint& p : rings[i]) {
+        const Sign st = squares_.local_status(m, grid_coordinates(tree_, p));
+        if (st != Sign::Zero) status.emplace(p, st);
+      }
+    }
+    std::vector<Sign> hint(squares.size(), Sign::Zero);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t i = 0; i < squares.size(); ++i) {
+        if (!inc[i].none() || hint[i] != Sign::Zero) continue;
+        for (const GridPoint& p : rings[i]) {
+          const auto it = status.find(p);
+          if (it == status.end()) continue;
+          hint[i] = it->second;
+          break;
+        }
+        if (hint[i] == Sign::Zero) continue;
+        changed = true;
+        for (const GridPoint& p : rings[i]) status.emplace(p, hint[i]);
+      }
+    }
+    return hint;
+  }
+
+  // Two-facet box (§4.5.5; see facet_boxes.hpp for the construction).
+  void two_facet_box(std::int32_t leaf, int edge) {
+    const EdgeCone& ec = squares_.cone(edge);
+    const BoxKey<3>& key = tree_.key(leaf);
+    std::vector<Tri> tris;
+    box_tris(key, squares_.faces_of(BoxKind::TwoFacet, edge), tris);
+    const GridPoint centre = key_centre(key);
+    const Vec3 C = grid_coordinates(tree_, centre);
+    const double h = tree_.side(leaf);
+    const FacetPlane* pl[2] = {&ec.f(), &ec.g()};
+    const auto chord0 = chords(leaf, tris, *pl[0]);
+    const auto chord1 = chords(leaf, tris, *pl[1]);
+    if (chord0.empty() || chord1.empty())
+      throw InternalError("tet3d: two-facet box " + std::to_string(leaf) + " without both facets on its faces");
+    // The centre strictly on P's side of both planes: for a convex edge it is
+    // inside P, for a reflex one in the kernel H_F ∩ H_G of the star-shaped
+    // P ∧ b; it sees every boundary triangle from inside.
+    const bool kernel = pl[0]->side(C) == Sign::Negative && pl[1]->side(C) == Sign::Negative;
+    const bool far = std::fabs(pl[0]->distance(C)) >= h / 4 && std::fabs(pl[1]->distance(C)) >= h / 4;
+    if (kernel && (far || !ec.convex())) {
+      const int v = centre_vertex(centre);
+      for (const Tri& t : tris) cone(leaf, t, v);
+      fan(leaf, chord0, *pl[0], VertexKind::TwoFacetCentre, centre, v);
+      fan(leaf, chord1, *pl[1], VertexKind::TwoFacetCentre, centre, v);
+      ++out_.stats.two_facet_centre;
+      out_.stats.two_facet_reflex += ec.convex() ? 0 : 1;
+      ++out_.stats.two_facet;
+      return;
+    }
+    if (!ec.convex())
+      throw InternalError("tet3d: two-facet box " + std::to_string(leaf) + " at reflex edge " + std::to_string(edge) +
+                          " with its centre outside the kernel (not done)");
+    // The apex's facet: the one whose plane is nearer the box centre.
+    const int near = std::fabs(pl[0]->distance(C)) <= std::fabs(pl[1]->distance(C)) ? 0 : 1;
+    const FacetPlane& f = *pl[near];
+    const FacetPlane& g = *pl[1 - near];
+    const auto& chord_f = near == 0 ? chord0 : chord1;
+    const auto& chord_g = near == 0 ? chord1 : chord0;
+    const int v = polygon_centre(chord_f, f, VertexKind::TwoFacetApex, centre);
+    for (const Tri& t : tris)
+      if (!(on_facet(t[0], f) && on_facet(t[1], f) && on_facet(t[2], f))) cone(leaf, t, v);
+    fan(leaf, chord_g, g, VertexKind::TwoFacetCentre, centre, v);
+    ++out_.stats.two_facet;
+  }
+
+  void count_squares() {
+    out_.stats.squares_nothing = squares_.count(SquareCase::Nothing);
+    out_.stats.squares_a = squares_.count(SquareCase::A);
+    out_.stats.squares_c = squares_.count(SquareCase::C);
+    out_.stats.squares_bd = squares_.count(SquareCase::BD);
+    out_.stats.vertex_squares_located = squares_.located();
+    out_.stats.vertex_squares_by_neighbours = squares_.located_by_neighbours();
+  }
+
   BoxMesh finish() {
     out_.mesh.vertices = book_.points();
     out_.keys.clear();
@@ -109,16 +273,69 @@ class Assembler {
   }
 
  private:
+  using Chords = std::map<std::pair<int, int>, std::pair<int, int>>;
+
+  // π-triangles of the given squares, right-hand normal out of the box
+  // (the dispatcher gives +n; a lower face's outward normal is -n).
+  void square_tris(const std::vector<FaceSquare>& squares, const BoxFaces& faces, bool upper, std::vector<Tri>& tris) {
+    const std::size_t first = tris.size();
+    for (const FaceSquare& s : squares) squares_.triangulate(s, faces, tris);
+    if (!upper)
+      for (std::size_t i = first; i < tris.size(); ++i) std::swap(tris[i][1], tris[i][2]);
+  }
+
+  void box_tris(const BoxKey<3>& key, const BoxFaces& faces, std::vector<Tri>& tris) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (const bool upper : {false, true}) {
+        std::vector<FaceSquare> squares;
+        face_squares(key, axis, upper, corners_, squares);
+        square_tris(squares, faces, upper, tris);
+      }
+  }
+
+  // Edges of face triangles on F: the boundary of the polygon F ∩ b, keyed
+  // by (smaller id, larger id), each kept with the direction a -> b it has
+  // in its face triangle. Every such edge lies on the face triangles' side
+  // of one box face, so it is in exactly one of them (the part of a face
+  // beyond F yields no triangles).
+  Chords chords(std::int32_t leaf, const std::vector<Tri>& tris, const FacetPlane& plane) const {
+    Chords chord;
+    for (const Tri& t : tris)
+      for (int i = 0; i < 3; ++i) {
+        const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+        if (!on_facet(a, plane) || !on_facet(b, plane)) continue;
+        if (!chord.emplace(std::pair{std::min(a, b), std::max(a, b)}, std::pair{a, b}).second)
+          throw InternalError("tet3d: edge on F in two face triangles of leaf " + std::to_string(leaf));
+      }
+    return chord;
+  }
+
+  // The mean of the polygon's vertices, rounded onto F (a point of the
+  // relative interior of the convex polygon F ∩ b), keyed (kind, box centre, F).
+  int polygon_centre(const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre) {
+    std::set<int> poly;
+    for (const auto& [edge, directed] : chord) poly.insert({edge.first, edge.second});
+    Vec3 mean;
+    for (const int p : poly) mean = mean + book_.point(p);
+    mean = (1.0 / static_cast<double>(poly.size())) * mean;
+    const VertexKey gk{kind, centre, {}, plane.facet()};
+    return book_.id(gk, [&] { return plane.settle(mean, dominant_axis(plane.normal())); });
+  }
+
+  // Fan of F ∩ b from its central point g, coned to v. P ∧ b is convex and
+  // bounded by the outward face triangles and F ∩ b, so edge a -> b of a face
+  // triangle runs b -> a in F ∩ b oriented outward (away from v): (b, a, g) is
+  // an outward triangle with v inside, hence (a, b, g, v) is positive.
+  void fan(std::int32_t leaf, const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre,
+           int v) {
+    const int g = polygon_centre(chord, plane, kind, centre);
+    for (const auto& [edge, directed] : chord) tet(leaf, "fan", directed.first, directed.second, g, v);
+  }
+
   int grid(const GridPoint& p) { return grid_vertex(p, tree_, warps_, book_); }
   // Box centres are never box vertices, so never warped.
   int centre_vertex(const GridPoint& p) {
     return book_.id(grid_key(p), [&] { return grid_coordinates(tree_, p); });
-  }
-
-  const FacetPlane& plane_of(int facet) {
-    auto it = planes_.find(facet);
-    if (it == planes_.end()) it = planes_.emplace(facet, std::make_unique<FacetPlane>(domain_, facet)).first;
-    return *it->second;
   }
 
   bool on_facet(int id, const FacetPlane& plane) const {
@@ -222,7 +439,7 @@ class Assembler {
   const Domain3& domain_;
   const WarpTable* warps_;
   PointBook book_;
-  std::map<int, std::unique_ptr<FacetPlane>> planes_;
+  SquareDispatcher squares_{tree_, corners_, domain_, book_, warps_};
   BoxMesh out_;
 };
 
@@ -233,18 +450,50 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   WarpTable warps;
   if (options.warp) {
     std::vector<FacetLeaf> boxes;
+    // Ring points of the boxes of the other kinds are never warped (their
+    // rules, §4.3 first pass and Fig. 4.7, are not done): a facet box with
+    // such a point on its faces is left out of the second pass.
+    std::unordered_set<GridPoint, GridPointHash> fixed;
+    std::vector<FaceSquare> squares;
+    auto rings = [&](const BoxJob& j, auto&& visit) {
+      squares.clear();
+      job_squares(tree, corners, j, squares);
+      for (const FaceSquare& s : squares)
+        for (const GridPoint& p : square_ring(s, corners))
+          if (!visit(p)) return false;
+      return true;
+    };
+    auto is_facet = [](const BoxJob& j) {
+      return (j.kind == BoxKind::FromFacet && j.facet >= 0) || j.kind == BoxKind::Facet;
+    };
     for (const BoxJob& j : jobs)
-      if (j.facet >= 0) boxes.push_back({j.leaf, j.facet});
+      if (!is_facet(j) && j.kind != BoxKind::FromFacet && j.kind != BoxKind::Empty)
+        rings(j, [&](const GridPoint& p) { return fixed.insert(p), true; });
+    for (const BoxJob& j : jobs) {
+      if (!is_facet(j)) continue;
+      if (!fixed.empty() && !rings(j, [&](const GridPoint& p) { return fixed.count(p) == 0; })) continue;
+      boxes.push_back({j.leaf, j.kind == BoxKind::Facet ? j.apex : j.facet});
+    }
     warps = warp_facet_vertices(tree, corners, domain, boxes);
   }
   Assembler a(tree, corners, domain, options.warp ? &warps : nullptr);
   for (const BoxJob& j : jobs) {
     if (!tree.is_leaf(j.leaf)) throw InternalError("tet3d: node " + std::to_string(j.leaf) + " is not a leaf");
-    if (j.facet < 0)
-      a.empty_box(j.leaf);
-    else
-      a.facet_box(j.leaf, j.facet);
+    switch (j.kind) {
+      case BoxKind::FromFacet:
+        if (j.facet < 0)
+          a.empty_box(j.leaf);
+        else
+          a.facet_box(j.leaf, j.facet);
+        break;
+      case BoxKind::Empty: a.empty_box(j.leaf); break;
+      case BoxKind::Facet: a.facet_box(j.leaf, j.apex); break;
+      case BoxKind::Edge: a.edge_box(j.leaf, j.apex); break;
+      case BoxKind::Vertex: a.vertex_box(j.leaf, j.apex, j.block); break;
+      case BoxKind::TwoFacet: a.two_facet_box(j.leaf, j.apex); break;
+    }
   }
+  a.count_squares();
   BoxMesh out = a.finish();
   out.warped = static_cast<std::int64_t>(warps.size());
   out.warp_conflicts = warps.conflicts;

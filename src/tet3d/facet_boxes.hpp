@@ -1,29 +1,43 @@
 #pragma once
-// Tetrahedra of empty boxes (§4.5.1) and of facet boxes (§4.5.4), before
-// warping (§4.3 not done: a box corner may lie on F; it is then its own
-// crossing point, cut_square.hpp).
+// Tetrahedra of empty boxes (§4.5.1), facet boxes (§4.5.4), edge boxes
+// (§4.5.3), vertex boxes (§4.5.2) and two-facet boxes (§4.5.5), before
+// the first warping pass (§4.3; a box corner may lie on F; it is then its own
+// crossing point, cut_square.hpp). Every box face square goes through the
+// square dispatcher (square_cases.hpp), so all kinds share one triangulation
+// of every square.
 //
-// A facet box b holds one P facet F and no P vertex or edge in P ∧ b, so
-// P ∧ b = cube ∩ (P's side of F's plane), convex. Its faces are triangulated
-// square by square (Case A or C, cut_square.hpp). The central vertex v is the
-// box centre; with d its signed distance to F (a construction; thresholds in
-// floating point, either outcome valid):
-//   d <= -h/4  v inside P: v coned to the face triangles and to the fan of
-//              F ∩ b from its central point g (the mean of the polygon's
-//              vertices, rounded onto F);
-//   |d| < h/4  v moved onto F (rounded onto F): coned to the face triangles;
-//   d >= h/4   v beyond F: every cone v-T is clipped by F into a prism with
-//              bottom T and top T' on F (a vertex of T on F is its own clip),
-//              cut into 1, 2 or 3 tetrahedra. Each quadrilateral side of a
-//              prism is shared with the next prism of the same box and is cut
-//              by the diagonal from its smallest vertex key; diagonals from
-//              one total order never form the cyclic pattern of a Schönhardt
-//              prism, so the three tetrahedra always exist (the prism's
-//              smallest vertex sees both quads through it by diagonals).
-// Every tetrahedron (cones, the F ∩ b fan, prism pieces) is written in the
-// vertex order that the construction makes positive (facet_boxes.cpp states
-// why for each); exact orient3d on the final (rounded or warped) coordinates
-// must agree, else InternalError naming the leaf. Nothing is flipped.
+// Edge box b (edge E, facets F, G): v = the midpoint of E ∩ b (constructed,
+// rounded within an ulp of E, edge_point.hpp), coned to every π-triangle of
+// b's faces. P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in
+// the open cube, so the cones tile it; their faces through v on F and G are
+// the boundary triangles there.
+// Vertex box (P vertex v, its united 2x2x2 box B, §4.1.3; the job names the
+// leaf holding v and which side B extends to): v coned to the π-triangles of
+// B's outer faces (squares of the finer side); B's inner leaves are not meshed
+// one by one (box_jobs.hpp leaves them out). P ∧ B = cone(v) ∩ B is
+// star-shaped from v, which lies strictly inside B (Lemma 1; checked
+// exactly). A square of B meeting no face takes its status (inside / outside)
+// from the ring points it shares with squares that do, decided by their local
+// models (square_cases.hpp), propagated over B's surface.
+//
+// Jobs from an octree: box_jobs.hpp. Per-component: each job is one tree node
+// (one component of a duplicated cube, §4.1.1), with the faces of its kind.
+// Two-facet box (facets F, G of an edge E outside the box, §4.5.5). With
+// H_F, H_G P's sides of the two planes, P ∧ b = cube ∩ H_F ∩ H_G (convex E)
+// or cube ∩ (H_F ∪ H_G) (reflex E; star-shaped from the kernel H_F ∩ H_G).
+//   centre strictly in H_F ∩ H_G, and (reflex, or at least h/4 from both
+//   planes): v = the centre, coned to the π-triangles of the faces and to the
+//   fans of F ∩ b and G ∩ b from their vertex means (as the facet box's
+//   "inside" case);
+//   otherwise, convex E: v is put on the facet whose plane is nearer the box
+//   centre, at the mean of the vertices of the polygon F ∩ b (a point of its
+//   relative interior, rounded onto F), and coned to the π-triangles and to
+//   the fan of the other facet's polygon. Deviation: the thesis projects the
+//   centroid onto F when within h/4 and otherwise keeps it (possibly outside
+//   P, with prisms); the projection may miss F ∩ b, the polygon mean cannot,
+//   and cones from a boundary point of a convex polytope always tile it, so
+//   no prism is needed;
+//   otherwise (reflex E, centre outside the kernel): InternalError (not done).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -31,21 +45,40 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh.hpp"
 #include "tet3d/box_faces.hpp"
+#include "tet3d/square_cases.hpp"
 #include "tet3d/vertex_key.hpp"
 
 namespace pqmesh::tet3d {
 
 struct BoxJob {
   std::int32_t leaf = -1;
-  int facet = -1;  // -1: an empty box
+  int facet = -1;  // kind FromFacet: the facet box's facet; -1: an empty box
+  BoxKind kind = BoxKind::FromFacet;
+  // Facet: facet id; Edge, TwoFacet: index into Domain3::edges; Vertex: P vertex id.
+  int apex = -1;
+  // Vertex: bit a set when the united box extends one leaf side below the
+  // leaf along axis a (else above); the united box is 2x2x2 leaves.
+  std::uint8_t block = 0;
 };
 
 struct FacetBoxStats {
   std::int64_t empty = 0, inside = 0, on_facet = 0, beyond = 0;  // boxes per case
+  std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
+  std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
+  std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
+  // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted
+  // once per asking box (a shared square is counted from both sides).
+  std::int64_t squares_nothing = 0, squares_a = 0, squares_c = 0, squares_bd = 0;
+  // Vertex-box squares meeting no face: decided from neighbouring squares'
+  // local models / by locate() (none expected).
+  std::int64_t vertex_squares_by_neighbours = 0, vertex_squares_located = 0;
 };
 
 struct BoxMeshOptions {
-  bool warp = false;  // §4.3 second pass for the facet boxes (warp.hpp)
+  // §4.3 second pass for the facet boxes (warp.hpp), only for facet boxes
+  // none of whose face points is on the faces of an edge, vertex or
+  // two-facet box (those are never moved: their warping rules are not done).
+  bool warp = false;
 };
 
 struct BoxMesh {
@@ -55,6 +88,16 @@ struct BoxMesh {
   FacetBoxStats stats;
   std::int64_t warped = 0, warp_conflicts = 0;
 };
+
+// The squares of the job's box faces (face order (axis 0..2) x (lower,
+// upper)): the leaf's faces, or the united box's (2x2x2 leaves) for a vertex job.
+void job_squares(const OctTree& tree, const CornerSet& corners, const BoxJob& job, std::vector<FaceSquare>& out);
+// The squares of face (axis, upper) of the united box of a vertex job.
+void united_face_squares(const BoxKey<3>& key, std::uint8_t block, int axis, bool upper, const CornerSet& corners,
+                         std::vector<FaceSquare>& out);
+GridPoint united_lo(const BoxKey<3>& key, std::uint8_t block);
+// The P faces the square dispatcher sees for the job's box.
+BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job);
 
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                    std::span<const BoxJob> jobs, const BoxMeshOptions& options = {});

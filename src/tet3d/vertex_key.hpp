@@ -18,6 +18,14 @@
 //   CrossingProjection  Case D2 with the centre p of S beyond F's chord: the
 //                    segment from p to the crossing of the other facet with the
 //                    ring segment of S starting (counter-clockwise) at q, clipped at F
+//   EdgeMidpoint     midpoint of E ∩ I(b) for the edge box with centre p, edge
+//                    E (id in `facet`), §4.5.3; rounded within an ulp of E
+//   PVertex          the P vertex with id `facet` (exact input coordinates):
+//                    the apex of its united vertex box, §4.5.2
+//   TwoFacetApex     the central vertex of the two-facet box with centre p
+//                    moved onto facet `facet` (§4.5.5)
+//   TwoFacetCentre   the central point of F ∩ b (F = `facet`) of the two-facet
+//                    box with centre p (§4.5.5, the facet-box fan)
 //
 // Every key names the same point from both boxes sharing the square, so the
 // two sides build identical vertices.
@@ -38,7 +46,11 @@ enum class VertexKind : std::uint8_t {
   BoxClip,
   Warped,
   EdgeCrossing,
-  CrossingProjection
+  CrossingProjection,
+  EdgeMidpoint,
+  PVertex,
+  TwoFacetApex,
+  TwoFacetCentre
 };
 
 struct VertexKey {
@@ -52,13 +64,15 @@ struct VertexKey {
 inline VertexKey grid_key(const GridPoint& p) { return {VertexKind::Grid, p, {}, -1}; }
 
 // Kinds constructed on their facet's plane (rounded onto it, facet_plane.hpp).
-// EdgeCrossing is not among them: its `facet` field is an edge id (the point
-// is within an ulp of the edge, hence near both its facets' planes).
+// EdgeCrossing and EdgeMidpoint are not among them: their `facet` field is an
+// edge id (the point is within an ulp of the edge, hence near both its facets'
+// planes); nor is PVertex (`facet` is a vertex id).
 inline bool on_its_facet(const VertexKey& k) {
   return k.kind == VertexKind::FacetCrossing || k.kind == VertexKind::ChordMidpoint ||
          k.kind == VertexKind::ChordProjection || k.kind == VertexKind::BoxOnFacet ||
          k.kind == VertexKind::FacetCentre || k.kind == VertexKind::BoxClip ||
-         k.kind == VertexKind::CrossingProjection;
+         k.kind == VertexKind::CrossingProjection || k.kind == VertexKind::TwoFacetApex ||
+         k.kind == VertexKind::TwoFacetCentre;
 }
 
 struct VertexKeyHash {

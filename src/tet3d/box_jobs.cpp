@@ -1,0 +1,68 @@
+#include "tet3d/box_jobs.hpp"
+
+#include <algorithm>
+
+namespace pqmesh::tet3d {
+
+BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
+  const OctTree& tree = builder.tree();
+  const Domain3& domain = builder.domain();
+  const mv3d::LeafClassifier classifier(domain);
+  BoxJobs out;
+  std::vector<char> vertex_done(domain.plc.vertices.size(), 0);
+  auto problem = [&](std::int32_t n, const std::string& why) {
+    out.problems.push_back("leaf " + std::to_string(n) + " (level " + std::to_string(tree.level(n)) + "): " + why);
+  };
+  for (const std::int32_t n : builder.leaves_by_id()) {
+    const mv3d::NodeData3& d = builder.data(n);
+    const mv3d::LeafClass c = classifier.classify(mv3d::leaf_faces(builder, n));
+    ++out.leaves[static_cast<std::size_t>(c.kind)];
+    if (!d.has_component) continue;
+    if (d.vertex_owner >= 0) {
+      ++out.united_pieces;
+      const int v = d.vertex_owner;
+      // A piece holds v's cone only (kind VertexCone by the united-box rule,
+      // or EmptyInside); anything else would be left unmeshed by the cone.
+      if (c.kind != mv3d::LeafKind::VertexCone && c.kind != mv3d::LeafKind::EmptyInside)
+        problem(n, std::string("a piece of the united box of vertex ") + std::to_string(v) + " of kind " +
+                       mv3d::to_string(c.kind));
+      if (!std::binary_search(d.vertices.begin(), d.vertices.end(), v)) continue;
+      if (vertex_done[static_cast<std::size_t>(v)]++) continue;
+      // The united box: 2x2x2 leaves of n's size; which side per axis.
+      const mv3d::Cube& b = builder.vertex_box(v);
+      const mv3d::Cube s = builder.cube(n);
+      BoxJob job{n, -1, BoxKind::Vertex, v, 0};
+      const double blo[3] = {b.lo.x, b.lo.y, b.lo.z}, slo[3] = {s.lo.x, s.lo.y, s.lo.z};
+      for (int a = 0; a < 3; ++a)
+        if (blo[a] < slo[a]) job.block = static_cast<std::uint8_t>(job.block | (1u << a));
+      out.jobs.push_back(job);
+      // Every leaf meeting P in the united box must be one of its pieces.
+      const double h = tree.side(n);
+      std::vector<std::int32_t> found;
+      for (int k = 0; k < 8; ++k) {
+        tree.leaves_containing({b.lo.x + (0.5 + (k & 1)) * h, b.lo.y + (0.5 + ((k >> 1) & 1)) * h,
+                                b.lo.z + (0.5 + (k >> 2)) * h},
+                               found);
+        for (const std::int32_t m : found) {
+          const mv3d::NodeData3& dm = builder.data(m);
+          if (!dm.has_component || dm.vertex_owner == v) continue;
+          problem(m, "meets P inside the united box of vertex " + std::to_string(v) + " but is not a piece of it");
+        }
+      }
+      continue;
+    }
+    switch (c.kind) {
+      case mv3d::LeafKind::EmptyInside: out.jobs.push_back({n, -1, BoxKind::Empty, -1, 0}); break;
+      case mv3d::LeafKind::FacetCone: out.jobs.push_back({n, -1, BoxKind::Facet, c.apex, 0}); break;
+      case mv3d::LeafKind::EdgeCone: out.jobs.push_back({n, -1, BoxKind::Edge, c.apex, 0}); break;
+      case mv3d::LeafKind::TwoFacet: out.jobs.push_back({n, -1, BoxKind::TwoFacet, c.apex, 0}); break;
+      case mv3d::LeafKind::VertexCone: problem(n, "a vertex cone outside every united box"); break;
+      default: problem(n, std::string("kind ") + mv3d::to_string(c.kind)); break;
+    }
+  }
+  std::sort(out.problems.begin(), out.problems.end());
+  out.problems.erase(std::unique(out.problems.begin(), out.problems.end()), out.problems.end());
+  return out;
+}
+
+}  // namespace pqmesh::tet3d

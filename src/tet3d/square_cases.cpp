@@ -1,0 +1,266 @@
+#include "tet3d/square_cases.hpp"
+
+#include <algorithm>
+
+#include "pqmesh/errors.hpp"
+#include "tet3d/square_meets.hpp"
+
+namespace pqmesh::tet3d {
+
+const char* to_string(BoxKind kind) {
+  switch (kind) {
+    case BoxKind::FromFacet: return "from-facet";
+    case BoxKind::Empty: return "empty";
+    case BoxKind::Facet: return "facet";
+    case BoxKind::Edge: return "edge";
+    case BoxKind::Vertex: return "vertex";
+    case BoxKind::TwoFacet: return "two-facet";
+  }
+  return "?";
+}
+
+SquareDispatcher::SquareDispatcher(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                                   PointBook& book, const WarpTable* warps)
+    : tree_(tree), corners_(corners), domain_(domain), book_(book), warps_(warps) {
+  facet_tris_.resize(domain.plc.facets.size());
+  for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t)
+    facet_tris_[static_cast<std::size_t>(domain.facet_triangle_owner[t])].push_back(static_cast<int>(t));
+  const std::size_t nv = domain.plc.vertices.size();
+  vertex_edges_.resize(nv);
+  vertex_facets_.resize(nv);
+  for (std::size_t e = 0; e < domain.edges.size(); ++e) {
+    const DomainEdge& de = domain.edges[e];
+    vertex_edges_[static_cast<std::size_t>(de.a)].push_back(static_cast<int>(e));
+    vertex_edges_[static_cast<std::size_t>(de.b)].push_back(static_cast<int>(e));
+    const int f = std::min(de.facets[0], de.facets[1]), g = std::max(de.facets[0], de.facets[1]);
+    pair_edges_[{f, g}].push_back(static_cast<int>(e));
+  }
+  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
+    for (const auto& loop : domain.plc.facets[f].loops)
+      for (const int v : loop) vertex_facets_[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
+  for (auto& list : vertex_edges_) std::sort(list.begin(), list.end());
+  for (auto& list : vertex_facets_) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+}
+
+BoxFaces SquareDispatcher::faces_of(BoxKind kind, int apex) const {
+  BoxFaces b;
+  b.kind = kind;
+  b.apex = apex;
+  switch (kind) {
+    case BoxKind::FromFacet:
+    case BoxKind::Empty:
+      b.kind = BoxKind::Empty;
+      b.apex = -1;
+      break;
+    case BoxKind::Facet:
+      b.facets = {apex};
+      break;
+    case BoxKind::Edge:
+    case BoxKind::TwoFacet: {
+      const DomainEdge& e = domain_.edges.at(static_cast<std::size_t>(apex));
+      if (kind == BoxKind::Edge) b.edges = {apex};
+      b.facets = {std::min(e.facets[0], e.facets[1]), std::max(e.facets[0], e.facets[1])};
+      break;
+    }
+    case BoxKind::Vertex:
+      b.vertices = {apex};
+      b.edges = vertex_edges(apex);
+      b.facets = vertex_facets(apex);
+      break;
+  }
+  return b;
+}
+
+const FacetPlane& SquareDispatcher::plane(int facet) {
+  auto it = planes_.find(facet);
+  if (it == planes_.end()) it = planes_.emplace(facet, std::make_unique<FacetPlane>(domain_, facet)).first;
+  return *it->second;
+}
+
+const EdgeCone& SquareDispatcher::cone(int edge) {
+  auto it = cones_.find(edge);
+  if (it == cones_.end()) it = cones_.emplace(edge, std::make_unique<EdgeCone>(domain_, edge)).first;
+  return *it->second;
+}
+
+int SquareDispatcher::edge_of_facets(int f, int g) const {
+  const auto it = pair_edges_.find({std::min(f, g), std::max(f, g)});
+  if (it == pair_edges_.end()) return -1;
+  if (it->second.size() != 1)
+    throw InternalError("tet3d: facets " + std::to_string(f) + " and " + std::to_string(g) +
+                        " share several edges (the square dispatcher needs one)");
+  return it->second[0];
+}
+
+bool SquareDispatcher::facet_meets(int facet, const SquareGeometry& g) {
+  // Cheap exact filter: S strictly on one side of the facet's plane.
+  const FacetPlane& pl = plane(facet);
+  int pos = 0, neg = 0;
+  for (const Vec3& c : g.corners) {
+    const Sign side = pl.side(c);
+    pos += side == Sign::Positive;
+    neg += side == Sign::Negative;
+  }
+  if (pos == 4 || neg == 4) return false;
+  const auto& pv = domain_.plc.vertices;
+  for (const int t : facet_tris_[static_cast<std::size_t>(facet)]) {
+    const auto& tri = domain_.facet_triangles[static_cast<std::size_t>(t)];
+    if (triangle_meets_square(g, pv[static_cast<std::size_t>(tri[0])], pv[static_cast<std::size_t>(tri[1])],
+                              pv[static_cast<std::size_t>(tri[2])]))
+      return true;
+  }
+  return false;
+}
+
+std::string SquareDispatcher::describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const {
+  const GridPoint c = s.centre();
+  auto list = [](const std::vector<int>& x) {
+    std::string r = "{";
+    for (std::size_t i = 0; i < x.size(); ++i) r += (i ? ", " : "") + std::to_string(x[i]);
+    return r + "}";
+  };
+  return "square (axis " + std::to_string(s.n) + ", centre " + std::to_string(c.f[0]) + " " + std::to_string(c.f[1]) +
+         " " + std::to_string(c.f[2]) + ", side " + std::to_string(s.side) + ") of a " + to_string(faces.kind) +
+         " box (apex " + std::to_string(faces.apex) + ") meets vertices " + list(m.vertices) + ", edges " +
+         list(m.edges) + ", facets " + list(m.facets);
+}
+
+SquareDispatcher::Incidence SquareDispatcher::incidences(const FaceSquare& s, const BoxFaces& faces) {
+  const SquareGeometry g = square_geometry(s, tree_);
+  const auto& pv = domain_.plc.vertices;
+  Incidence m;
+  for (const int v : faces.vertices)
+    if (square_contains(g, pv[static_cast<std::size_t>(v)])) m.vertices.push_back(v);
+  for (const int e : faces.edges) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+    if (segment_meets_square(g, pv[static_cast<std::size_t>(de.a)], pv[static_cast<std::size_t>(de.b)]))
+      m.edges.push_back(e);
+  }
+  for (const int f : faces.facets) {
+    bool meets = false;
+    switch (faces.kind) {
+      case BoxKind::Facet: meets = plane_meets(f, g); break;
+      case BoxKind::Edge:
+      case BoxKind::TwoFacet: meets = half_plane_meets(cone(faces.apex), f, g); break;
+      default: meets = facet_meets(f, g); break;
+    }
+    if (meets) m.facets.push_back(f);
+  }
+  return m;
+}
+
+bool SquareDispatcher::plane_meets(int facet, const SquareGeometry& g) {
+  const FacetPlane& pl = plane(facet);
+  int pos = 0, neg = 0;
+  for (const Vec3& c : g.corners) {
+    const Sign side = pl.side(c);
+    pos += side == Sign::Positive;
+    neg += side == Sign::Negative;
+  }
+  return pos < 4 && neg < 4;
+}
+
+// F's part of dP near E: the points of F's plane where G's sign is not that of
+// P's side of G (convex: P's side or on G, i.e. G <= 0; reflex: G >= 0). The
+// section of F's plane with S is a segment, G is affine along it, so it meets
+// that part iff one of its end points does: a corner on F's plane (G's sign
+// exact) or the crossing of F's plane with a side of S (G's sign there exact,
+// EdgeCone::g_at_f_crossing, without constructing it).
+bool SquareDispatcher::half_plane_meets(const EdgeCone& ec, int facet, const SquareGeometry& g) {
+  const bool is_f = facet == ec.f().facet();
+  if (!is_f && facet != ec.g().facet()) throw InternalError("tet3d: facet " + std::to_string(facet) + " not on the edge");
+  const FacetPlane& x = is_f ? ec.f() : ec.g();
+  const FacetPlane& y = is_f ? ec.g() : ec.f();
+  std::array<Sign, 4> sx{};
+  for (std::size_t i = 0; i < 4; ++i) sx[i] = x.side(g.corners[i]);
+  const Sign bad = ec.convex() ? Sign::Positive : Sign::Negative;  // G's sign off F's part of dP
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::size_t j = (i + 1) % 4;
+    if (sx[i] == Sign::Zero && y.side(g.corners[i]) != bad) return true;
+    if (sx[i] * sx[j] == Sign::Negative) {
+      const Sign at = is_f ? ec.g_at_f_crossing(g.corners[i], g.corners[j]) : ec.f_at_g_crossing(g.corners[i], g.corners[j]);
+      if (at != bad) return true;
+    }
+  }
+  return false;
+}
+
+Sign SquareDispatcher::local_status(const Incidence& m, Vec3 p) {
+  if (!m.vertices.empty() || m.edges.size() > 1 || m.facets.empty() || m.facets.size() > 2)
+    throw InternalError("tet3d: no local model for these incidences");
+  if (m.facets.size() == 1) return plane(m.facets[0]).side(p);
+  const int e = edge_of_facets(m.facets[0], m.facets[1]);
+  if (e < 0) throw InternalError("tet3d: no local model for two facets without a common edge");
+  return cone(e).status(p);
+}
+
+SquareCase SquareDispatcher::triangulate(const FaceSquare& s, const BoxFaces& faces,
+                                         std::vector<std::array<int, 3>>& out, Sign inside_hint) {
+  const Incidence m = incidences(s, faces);
+  const std::vector<int>& me = m.edges;
+  const std::vector<int>& mf = m.facets;
+
+  SquareCase result = SquareCase::Nothing;
+  if (!m.vertices.empty() || me.size() > 1 || mf.size() > 2) throw InternalError("tet3d: " + describe(s, faces, m));
+  if (mf.empty()) {
+    if (!me.empty()) throw InternalError("tet3d: " + describe(s, faces, m));
+    const GridPoint centre = s.centre();
+    const Vec3 C = grid_coordinates(tree_, centre);
+    bool inside = true;
+    switch (faces.kind) {
+      case BoxKind::FromFacet:
+      case BoxKind::Empty:
+        break;
+      case BoxKind::Facet: {
+        const Sign side = plane(faces.apex).side(C);
+        if (side == Sign::Zero) throw InternalError("tet3d: centre on F, " + describe(s, faces, m));
+        inside = side == Sign::Negative;
+        break;
+      }
+      case BoxKind::Edge:
+      case BoxKind::TwoFacet: {
+        const Sign st = cone(faces.apex).status(C);
+        if (st == Sign::Zero) throw InternalError("tet3d: centre on dP, " + describe(s, faces, m));
+        inside = st == Sign::Negative;
+        break;
+      }
+      case BoxKind::Vertex: {
+        if (inside_hint != Sign::Zero) {
+          inside = inside_hint == Sign::Negative;
+          ++located_by_neighbours_;
+          break;
+        }
+        const Location loc = locate(domain_, C);
+        if (loc == Location::Boundary) throw InternalError("tet3d: centre on dP, " + describe(s, faces, m));
+        inside = loc == Location::Inside;
+        ++located_;
+        break;
+      }
+    }
+    if (inside) {
+      const std::vector<GridPoint> ring = square_ring(s, corners_);
+      const int c = book_.id(grid_key(centre), [&] { return C; });
+      const std::size_t k = ring.size();
+      for (std::size_t i = 0; i < k; ++i)
+        out.push_back({c, grid_vertex(ring[i], tree_, warps_, book_), grid_vertex(ring[(i + 1) % k], tree_, warps_, book_)});
+      result = SquareCase::A;
+    }
+  } else if (mf.size() == 1) {
+    if (!me.empty()) throw InternalError("tet3d: " + describe(s, faces, m));
+    triangulate_cut_square(s, corners_, tree_, plane(mf[0]), book_, out, warps_);
+    result = SquareCase::C;
+  } else {
+    const int e = edge_of_facets(mf[0], mf[1]);
+    if (e < 0 || (!me.empty() && me[0] != e))
+      throw InternalError("tet3d: two facets without a common edge: " + describe(s, faces, m));
+    triangulate_edge_square(s, corners_, tree_, cone(e), book_, out, warps_);
+    result = SquareCase::BD;
+  }
+  ++counts_[static_cast<std::size_t>(result)];
+  return result;
+}
+
+}  // namespace pqmesh::tet3d
