@@ -54,13 +54,23 @@ int Refiner::shortest_edge(int t) const {
 
 // Smallest angle (opposite the shortest edge) below the target, by the law of
 // cosines in double.
+// The edge vectors and squared lengths of shortest_edge are reused: with m
+// the shortest edge, p = v[m+1] - v[m] is the negated vector of edge m+2 and
+// q = v[m+2] - v[m] the vector of edge m+1 (negation is exact), so the
+// values below are bit for bit those of p and q formed anew.
 bool Refiner::is_bad(int t) const {
   if (tri_.is_ghost(t) || !tri_.inside(t)) return false;
   const auto& v = tri_.tri(t).v;
-  const int m = shortest_edge(t);
-  const Vec2 r = pts_[v[m]];
-  const Vec2 p = pts_[v[next3(m)]] - r, q = pts_[v[prev3(m)]] - r;
-  const double lp = dot(p, p), lq = dot(q, q);
+  Vec2 d[3];
+  double l[3];
+  int m = 0;
+  for (int i = 0; i < 3; ++i) {
+    d[i] = pts_[v[next3(i)]] - pts_[v[prev3(i)]];
+    l[i] = dot(d[i], d[i]);
+    if (l[i] < l[m]) m = i;  // shortest_edge's choice: ties to the lowest index
+  }
+  const Vec2 p{-d[prev3(m)].x, -d[prev3(m)].y}, q = d[next3(m)];
+  const double lp = l[prev3(m)], lq = l[next3(m)];
   return dot(p, q) > cos_target_ * std::sqrt(lp * lq);
 }
 

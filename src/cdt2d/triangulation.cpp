@@ -31,6 +31,16 @@ void check_duplicates_sorted(const std::vector<Vec2>& pts) {
     if (pts[ids[i]] == pts[ids[i - 1]]) throw_duplicate(ids[i], ids[i - 1]);
 }
 
+// p, a, d, b (in this order around a quadrilateral) are the corners of an
+// axis-parallel rectangle, p opposite d: then the four are cocircular and
+// incircle is exactly zero (no flip). Exact: coordinate equalities only. The
+// quadtree's grid corners make this the most common tie, and the one the
+// floating-point filter of incircle cannot decide.
+bool axis_rectangle(Vec2 p, Vec2 a, Vec2 d, Vec2 b) {
+  return (p.x == a.x && d.x == b.x && p.y == b.y && d.y == a.y) ||
+         (p.x == b.x && d.x == a.x && p.y == a.y && d.y == b.y);
+}
+
 }  // namespace
 
 int Triangulation::random3() {
@@ -267,7 +277,8 @@ void Triangulation::legalize(int p) {
     const int a = T.v[1], b = T.v[2];
     bool do_flip;
     if (a != kGhost && b != kGhost) {
-      do_flip = d != kGhost && incircle(q, pts_[a], pts_[b], pts_[d]) == Sign::Positive;
+      do_flip = d != kGhost && !axis_rectangle(q, pts_[a], pts_[d], pts_[b]) &&
+                incircle(q, pts_[a], pts_[b], pts_[d]) == Sign::Positive;
     } else if (b == kGhost) {
       do_flip = orient2d(pts_[a], pts_[d], q) == Sign::Positive;  // neighbour is ghost (a, d, g)
     } else {

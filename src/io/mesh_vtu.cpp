@@ -10,6 +10,7 @@
 // VTK's tetrahedron has positive volume for pqmesh's orientation (its
 // reference tetrahedron is (0,0,0), (1,0,0), (0,1,0), (0,0,1)).
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -55,6 +56,56 @@ struct ArraySpec {
   int components;
   std::size_t count;  // number of scalars (tuples * components)
 };
+
+// Binary (appended, raw) array `array` (numbering as in write_body) on a
+// little-endian machine: the bytes put_value(array, i, true) would write for
+// every i, produced in staged blocks instead of one call per scalar. Arrays
+// already stored in the file's layout go out in one piece.
+template <class M>
+void put_raw_array(const M& mesh, const WriteOptions& options, int array, std::size_t count, BufferedWriter& out) {
+  using T = MeshTraits<M>;
+  constexpr int D = T::dim;
+  constexpr int N = T::cell_nodes;
+  const auto& cells = T::cells(mesh);
+  const int num_fields = static_cast<int>(options.cell_fields.size());
+  // Int32 markers (int is 32 bits on every platform we build for; checked).
+  static_assert(sizeof(int) == 4);
+  if (count == 0) return;
+  if (array == 0) return out.put_bytes(mesh.vertex_markers.data(), 4 * count);
+  if (array == 1) return out.put_bytes(T::cell_markers(mesh).data(), 4 * count);
+  if (array < 2 + num_fields)
+    return out.put_bytes(options.cell_fields[static_cast<std::size_t>(array - 2)].values.data(), 8 * count);
+  // Staged arrays: fill a block of scalars, write it, repeat.
+  constexpr std::size_t kStage = 1 << 13;  // scalars per block (64 KiB of 8-byte values)
+  const int rest = array - 2 - num_fields;
+  if (rest == 3) {  // types: one byte per cell
+    std::vector<std::uint8_t> block(std::min(count, kStage * 8), static_cast<std::uint8_t>(D == 2 ? 5 : 10));
+    for (std::size_t i = 0; i < count; i += block.size())
+      out.put_bytes(block.data(), std::min(block.size(), count - i));
+    return;
+  }
+  // Points (3 scalars per vertex), connectivity (N per cell) and offsets (1 per
+  // cell) are staged by whole items: `per` scalars for each of `items` items.
+  const std::size_t per = rest == 0 ? 3 : (rest == 1 ? N : 1);
+  const std::size_t items = count / per, block_items = kStage / per;
+  std::vector<std::uint64_t> block(block_items * per);
+  for (std::size_t first = 0; first < items; first += block_items) {
+    const std::size_t n = std::min(block_items, items - first);
+    std::uint64_t* w = block.data();
+    for (std::size_t i = first; i < first + n; ++i) {
+      if (rest == 0) {
+        for (int k = 0; k < 3; ++k) w[k] = std::bit_cast<std::uint64_t>(coord(mesh.vertices[i], k));
+      } else if (rest == 1) {
+        for (int k = 0; k < N; ++k)
+          w[k] = static_cast<std::uint64_t>(static_cast<std::int64_t>(cells[i][static_cast<std::size_t>(k)]));
+      } else {
+        w[0] = static_cast<std::uint64_t>((i + 1) * N);
+      }
+      w += per;
+    }
+    out.put_bytes(block.data(), 8 * n * per);
+  }
+}
 
 template <class M>
 void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options) {
@@ -159,7 +210,11 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
     out.put("<AppendedData encoding=\"raw\">\n_");
     for (const auto& [number, spec] : arrays) {
       out.put_le(static_cast<std::uint64_t>(spec.count * scalar_size(spec.scalar)));
-      for (std::size_t i = 0; i < spec.count; ++i) put_value(number, i, true);
+      if constexpr (std::endian::native == std::endian::little) {
+        put_raw_array(mesh, options, number, spec.count, out);
+      } else {
+        for (std::size_t i = 0; i < spec.count; ++i) put_value(number, i, true);
+      }
     }
     out.put("\n</AppendedData>\n");
   }

@@ -78,12 +78,36 @@ class CellLocator {
             if (c != kCrossed && segment_meets_cell(u, w, x(i), x(i + 1), y(j), y(j + 1))) c = kCrossed;
           }
       }
+    // Two uncrossed cells with a common side form a connected set that
+    // misses dP, so they lie on the same side: one location per connected
+    // region of uncrossed cells (4-neighbours), spread by a flood fill.
+    std::vector<std::size_t> stack;
     for (int i = 0; i < g_; ++i)
       for (int j = 0; j < g_; ++j) {
-        std::uint8_t& c = cell_[index(i, j)];
-        if (c == kCrossed) continue;
+        if (cell_[index(i, j)] != kUnknown) continue;
         const Location where = locator_.locate({x(i), y(j)});
-        c = where == Location::Inside ? kInside : where == Location::Outside ? kOutside : kCrossed;
+        const std::uint8_t label =
+            where == Location::Inside ? kInside : where == Location::Outside ? kOutside : kCrossed;
+        if (label == kCrossed) {  // cannot happen for a closed cell missing dP; kept as the safe answer
+          cell_[index(i, j)] = kCrossed;
+          continue;
+        }
+        cell_[index(i, j)] = label;
+        stack.assign(1, index(i, j));
+        while (!stack.empty()) {
+          const std::size_t c = stack.back();
+          stack.pop_back();
+          const auto g = static_cast<std::size_t>(g_);
+          const int ci = static_cast<int>(c / g), cj = static_cast<int>(c % g);
+          const int ni[4] = {ci - 1, ci + 1, ci, ci}, nj[4] = {cj, cj, cj - 1, cj + 1};
+          for (int k = 0; k < 4; ++k) {
+            if (ni[k] < 0 || ni[k] >= g_ || nj[k] < 0 || nj[k] >= g_) continue;
+            std::uint8_t& n = cell_[index(ni[k], nj[k])];
+            if (n != kUnknown) continue;
+            n = label;
+            stack.push_back(index(ni[k], nj[k]));
+          }
+        }
       }
   }
 
@@ -158,8 +182,10 @@ void Checker2::walk_segments(const Domain2& d) {
     const Vec2 pa = m_.vertices[A], pb = m_.vertices[B];
     const std::string name = "input segment " + std::to_string(s) + " (" + format_ids(seg) + ")";
     const ChainWalk walk = walk_chain(adjacency_, A, B, [&](int c, int w) {
+      // The cheap test first: the vertex the walk came from is also near the
+      // segment, and near_segment on such points needs exact arithmetic.
       const Vec2 p = m_.vertices[w];
-      return near_segment(p, pa, pb) && dot_sign(p, m_.vertices[c], pb) == Sign::Negative;
+      return dot_sign(p, m_.vertices[c], pb) == Sign::Negative && near_segment(p, pa, pb);
     });
     const int c = walk.chain.back();
     if (walk.end == ChainWalk::End::Stuck) {

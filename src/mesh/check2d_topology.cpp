@@ -75,6 +75,32 @@ void Checker2::measure_area() {
 }
 
 // ---- stage 3 -------------------------------------------------------------
+
+namespace {
+
+// make_adjacency (check_common.hpp) for edges that are distinct pairs (lo, hi),
+// lo < hi, sorted: the neighbours of v arrive in increasing order (first the
+// w < v of the edges (w, v), by w, then the w > v of the edges (v, w), by w),
+// so the lists come out sorted and without repeats with no sorting.
+Adjacency sorted_adjacency(int n, const std::vector<std::array<int, 2>>& edges) {
+  Adjacency adj;
+  adj.offset.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const auto& e : edges) {
+    ++adj.offset[static_cast<std::size_t>(e[0]) + 1];
+    ++adj.offset[static_cast<std::size_t>(e[1]) + 1];
+  }
+  for (std::size_t v = 0; v < static_cast<std::size_t>(n); ++v) adj.offset[v + 1] += adj.offset[v];
+  adj.items.resize(static_cast<std::size_t>(adj.offset[static_cast<std::size_t>(n)]));
+  std::vector<int> fill(adj.offset.begin(), adj.offset.end() - 1);
+  for (const auto& e : edges) {
+    adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
+    adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
+  }
+  return adj;
+}
+
+}  // namespace
+
 bool Checker2::stage3_edges() {
   const int nv = static_cast<int>(m_.vertices.size());
   const int nt = static_cast<int>(m_.triangles.size());
@@ -99,10 +125,25 @@ bool Checker2::stage3_edges() {
       }
     }
   }
+  // Each vertex's records sorted by (hi, code): most lists are a handful of
+  // records (insertion sort), a long fan goes to std::sort. Then the distinct
+  // edges are counted, so that all_edges is allocated once.
+  const auto rec_less = [](const Rec& x, const Rec& y) { return x.hi != y.hi ? x.hi < y.hi : x.code < y.code; };
+  std::size_t distinct = 0;
+  for (int a = 0; a < nv; ++a) {
+    const auto first = recs.begin() + start[a], last = recs.begin() + start[a + 1];
+    if (last - first > 16) {
+      std::sort(first, last, rec_less);
+    } else {
+      for (auto i = first + (first != last); i < last; ++i)
+        for (auto j = i; j != first && rec_less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+    }
+    for (auto it = first; it != last; ++it) distinct += (it == first || it->hi != (it - 1)->hi) ? 1 : 0;
+  }
   std::vector<std::array<int, 2>> all_edges;
+  all_edges.reserve(distinct);
   for (int a = 0; a < nv; ++a) {
     auto first = recs.begin() + start[a], last = recs.begin() + start[a + 1];
-    std::sort(first, last, [](const Rec& x, const Rec& y) { return x.hi != y.hi ? x.hi < y.hi : x.code < y.code; });
     for (auto it = first; it != last;) {
       auto run_end = it + 1;
       while (run_end != last && run_end->hi == it->hi) ++run_end;
@@ -137,7 +178,7 @@ bool Checker2::stage3_edges() {
   }
   recs = {};
   rep_.boundary_faces = static_cast<std::int64_t>(boundary_.size());
-  adjacency_ = make_adjacency(nv, all_edges);
+  adjacency_ = sorted_adjacency(nv, all_edges);
   all_edges_ = std::move(all_edges);
 
   report_unused_vertices(sink_, m_.vertices, m_.triangles, "triangle");

@@ -2,7 +2,9 @@
 #include "quad2d/mesh_points.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -135,6 +137,73 @@ double distance2(Vec2 p, Vec2 a, Vec2 b, double& t) {
 
 constexpr int kDropped = -3;
 
+// The rounded crossing of input segment s with the box-side line {x = at}
+// (vertical) or {y = at}, remembered: the two boxes on either side of a box
+// side ask for the same crossing, and rounding it onto the segment
+// (settle_on_segment) may need exact arithmetic. The construction is a
+// function of (s, vertical, at) alone, so a remembered point is the point the
+// second box would have made. Flat open addressing (linear probing, load at
+// most 1/2); never iterated, so it cannot affect the output order.
+class CrossingMemo {
+ public:
+  // The remembered point for the key, or nullptr.
+  const Vec2* find(int s, bool vertical, double at) const {
+    if (slots_.empty()) return nullptr;
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(at);
+    for (std::size_t i = hash(s, vertical, bits) & mask_;; i = (i + 1) & mask_) {
+      const Slot& e = slots_[i];
+      if (e.segment < 0) return nullptr;
+      if (e.segment == s && e.vertical == vertical && e.at_bits == bits) return &e.p;
+    }
+  }
+  // Room for n points without growing (one allocation: the table's memory
+  // goes back to the system as a whole when it is released). Empty table only.
+  void reserve(std::size_t n) {
+    std::size_t size = 64;
+    while (size < 2 * n) size *= 2;
+    if (count_ == 0 && size > slots_.size()) {
+      slots_.assign(size, Slot{});
+      mask_ = size - 1;
+      count_ = 0;
+    }
+  }
+  void insert(int s, bool vertical, double at, Vec2 p) {
+    if (2 * (count_ + 1) > slots_.size()) grow();
+    place({std::bit_cast<std::uint64_t>(at), s, vertical, p});
+    ++count_;
+  }
+
+ private:
+  struct Slot {
+    std::uint64_t at_bits = 0;
+    int segment = -1;  // -1: empty
+    bool vertical = false;
+    Vec2 p;
+  };
+  static std::size_t hash(int s, bool vertical, std::uint64_t bits) {
+    std::uint64_t h = bits ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(s)) << 1 | (vertical ? 1u : 0u)) *
+                                 0x9E3779B97F4A7C15ull;
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 29;
+    return static_cast<std::size_t>(h);
+  }
+  void place(const Slot& x) {
+    std::size_t i = hash(x.segment, x.vertical, x.at_bits) & mask_;
+    while (slots_[i].segment >= 0) i = (i + 1) & mask_;
+    slots_[i] = x;
+  }
+  void grow() {
+    std::vector<Slot> old(std::max<std::size_t>(64, 2 * slots_.size()));
+    old.swap(slots_);
+    mask_ = slots_.size() - 1;
+    for (const Slot& x : old)
+      if (x.segment >= 0) place(x);
+  }
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0, count_ = 0;
+};
+
 class PointGenerator {
  public:
   PointGenerator(const QuadtreeBuilder& b, QuadMeshStats& stats) : b_(b), d_(b.domain()), stats_(stats) {}
@@ -211,6 +280,7 @@ class PointGenerator {
       radix_sort(by_y_, grid_.ybits, [this](Vec2 p) { return grid_.iy(p.y); }, scratch);
     }
     find_crossings();
+    memo_ = CrossingMemo{};
     release(by_x_);  // peak memory: each table goes as soon as it has served
     release(by_y_);
     place_corners(corners, codec);
@@ -300,6 +370,10 @@ class PointGenerator {
   // exactly in the middle of its side, or whose nearer corner must stay clear
   // of an input vertex (Lemma 1), is kept as a vertex instead.
   void find_crossings() {
+    // A segment crosses the boundary of a box at most twice (both convex).
+    std::size_t pairs = 0;
+    for (const std::int32_t n : leaves_) pairs += b_.data(n).segments.size();
+    memo_.reserve(2 * pairs);
     for (const std::int32_t n : leaves_) {
       const NodeData& nd = b_.data(n);
       if (nd.segments.empty()) continue;
@@ -348,10 +422,15 @@ class PointGenerator {
     const auto across = [vertical](Vec2 p) { return vertical ? p.y : p.x; };
     if (along(a) == at || along(e) == at) return;  // an endpoint on the side (or the edge runs along it)
     if (along(a) > along(e)) std::swap(a, e);         // canonical: the same double from every box
-    const double t = (at - along(a)) / (along(e) - along(a));
-    const double v = across(a) + t * (across(e) - across(a));
-    Vec2 p = vertical ? Vec2{at, v} : Vec2{v, at};
-    p = settle_on_segment(p, a, e, vertical, !vertical);
+    Vec2 p;
+    if (const Vec2* known = memo_.find(s, vertical, at)) {
+      p = *known;
+    } else {
+      const double t = (at - along(a)) / (along(e) - along(a));
+      const double v = across(a) + t * (across(e) - across(a));
+      p = settle_on_segment(vertical ? Vec2{at, v} : Vec2{v, at}, a, e, vertical, !vertical);
+      memo_.insert(s, vertical, at, p);
+    }
     if (owner >= 0 && too_close(p, owner)) return;
     // The corners on this line around p.
     const std::vector<Vec2>& line = vertical ? by_x_ : by_y_;
@@ -488,6 +567,7 @@ class PointGenerator {
   std::vector<Snap> snaps_;
   std::vector<Snap> forced_;        // (corner, segment): a crossing forces the corner onto the segment
   std::vector<Crossing> crossings_;
+  CrossingMemo memo_;  // find_crossings only
   std::vector<std::int32_t> around_;
   std::vector<Vec2> plain_;     // corners kept where they are, in (x, y) order
   std::vector<Tagged> points_;  // the other points: on segments, input vertices

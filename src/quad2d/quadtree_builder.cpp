@@ -51,6 +51,16 @@ std::vector<std::int32_t> QuadtreeBuilder::leaves_by_id() const {
   return out;
 }
 
+std::vector<std::int32_t> QuadtreeBuilder::recorded_leaves() const {
+  std::vector<std::int32_t> out;
+  for (std::size_t r = 0; r < record_node_.size(); ++r) {
+    const std::int32_t n = record_node_[r];
+    if (n >= 0 && tree_.is_leaf(n) && tree_.payload(n) == static_cast<std::int32_t>(r)) out.push_back(n);
+  }
+  std::sort(out.begin(), out.end());  // records of older nodes come later (own_data)
+  return out;
+}
+
 Square QuadtreeBuilder::square(std::int32_t node) const {
   const auto b = tree_.box(node);
   return {{b.lo[0], b.lo[1]}, b.hi[0] - b.lo[0]};
@@ -75,6 +85,7 @@ NodeData& QuadtreeBuilder::own_data(std::int32_t node) {
   if (tree_.payload(node) == kInterior) {
     tree_.set_payload(node, static_cast<std::int32_t>(data_.size()));
     data_.push_back(data_[kInterior]);
+    record_node_.push_back(node);
   }
   return data_[static_cast<std::size_t>(tree_.payload(node))];
 }
@@ -83,6 +94,7 @@ void QuadtreeBuilder::init_root() {
   tree_.set_payload(0, 0);
   data_.emplace_back();
   data_.emplace_back();  // kInterior: a square inside P with no faces and no vertex box
+  record_node_ = {0, -1};
   data_[kInterior].has_component = true;
   data_[0].square_edges = all_loop_edges(domain_);
   data_[0].ex_edges = data_[0].square_edges;
@@ -114,6 +126,7 @@ void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_ch
       }
       tree_.set_payload(child, static_cast<std::int32_t>(data_.size()));
       data_.push_back(std::move(cd));
+      record_node_.push_back(child);
       continue;
     }
     cd.square_edges = edges_meeting(domain_, sq, pd.square_edges);
@@ -139,6 +152,7 @@ void QuadtreeBuilder::assign_children(std::int32_t parent, std::int32_t first_ch
       }
       tree_.set_payload(node, static_cast<std::int32_t>(data_.size()));
       data_.push_back(std::move(nd));
+      record_node_.push_back(node);
     }
   }
 }
@@ -269,17 +283,31 @@ void QuadtreeBuilder::reserve_for_size_phase() {
 }
 
 void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(std::int32_t) const) {
-  std::vector<std::int32_t> work = leaves_by_id();
+  // A leaf sharing the kInterior record has no vertex and no edge, so it is
+  // neither vertex nor edge crowded: those phases start from the leaves with
+  // records of their own, in the same (id) order, and split exactly the boxes
+  // the full list would have split.
+  std::vector<std::int32_t> work = phase == Phase::Size ? leaves_by_id() : recorded_leaves();
   std::int64_t& counter = phase == Phase::Size     ? stats_.splits_size
                           : phase == Phase::Vertex ? stats_.splits_vertex
                                                    : stats_.splits_edge;
+  // The size phase under a uniform cap needs no balancing: the work list is
+  // first in, first out and starts from the leaves of the root, so when a
+  // leaf of level L is split every leaf with a component has level L or L + 1
+  // (all of level L are crowded alike, and those of level L + 1 were made by
+  // this phase); the children, of level L + 1, are then at most twice smaller
+  // than any box they can be balance-adjacent to (both need a component), and
+  // balance() would split nothing. Skipping it leaves the tree and its ids
+  // exactly as they were.
+  const bool balance_free = phase == Phase::Size && size_.uniform() && work.size() == 1;
   for (std::size_t next = 0; next < work.size(); ++next) {
     const std::int32_t n = work[next];
     if (!tree_.is_leaf(n) || !data(n).has_component || !(this->*crowded)(n)) continue;
     if (tree_.level(n) >= tree_.max_level())
       throw InternalError("quad2d: refinement reached the deepest representable level (phase " +
                           std::to_string(static_cast<int>(phase)) + ")");
-    const std::int32_t before = split_and_balance(n);
+    const std::int32_t before = balance_free ? tree_.size() : split_and_balance(n);
+    if (balance_free) split(n);
     ++counter;
     for (std::int32_t id = before; id < tree_.size(); ++id)
       if (tree_.is_leaf(id)) work.push_back(id);
@@ -297,7 +325,7 @@ void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(st
 void QuadtreeBuilder::center_vertices() {
   const auto& pv = domain_.pslg.vertices;
   std::vector<std::int32_t> vertex_leaf(pv.size(), -1);
-  for (const std::int32_t n : leaves_by_id())
+  for (const std::int32_t n : recorded_leaves())  // id order: only these hold vertices
     for (const int v : data(n).vertices) vertex_leaf[static_cast<std::size_t>(v)] = n;
   std::vector<std::int32_t> big;
   for (std::size_t v = 0; v < pv.size(); ++v) {
@@ -357,15 +385,15 @@ void QuadtreeBuilder::center_vertices() {
 // is split once, the balance condition restored, and the boxes on edges are
 // protected (exempt from later splitting).
 void QuadtreeBuilder::protect_edges() {
-  std::vector<std::int32_t> targets;
-  for (const std::int32_t n : leaves_by_id())
+  std::vector<std::int32_t> targets;  // leaves on an edge have records of their own
+  for (const std::int32_t n : recorded_leaves())
     if (data(n).has_component && !data(n).segments.empty() && !tree_.is_protected(n)) targets.push_back(n);
   for (const std::int32_t n : targets) {
     if (!tree_.is_leaf(n)) continue;
     split_and_balance(n);
     ++stats_.splits_protection;
   }
-  for (const std::int32_t n : leaves_by_id())
+  for (const std::int32_t n : recorded_leaves())
     if (data(n).has_component && !data(n).segments.empty()) tree_.set_protected(n, true);
 }
 
@@ -377,10 +405,9 @@ void QuadtreeBuilder::build() {
   center_vertices();
   run_phase(Phase::Edge, &QuadtreeBuilder::edge_crowded);
   if (protect_edges_) protect_edges();
-  for (const std::int32_t n : leaves_by_id()) {
-    ++stats_.leaves;
+  stats_.leaves += tree_.leaf_count();
+  for (const std::int32_t n : recorded_leaves())  // kInterior leaves have a component
     if (!data(n).has_component) ++stats_.outside_leaves;
-  }
 }
 
 }  // namespace pqmesh::quad2d

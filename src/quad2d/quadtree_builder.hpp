@@ -81,6 +81,10 @@ class QuadtreeBuilder {
   // per-node lists. own_data() gives a node its own record before a change.
   static constexpr std::int32_t kInterior = 1;
   NodeData& own_data(std::int32_t node);
+  // The leaves with a record of their own (not kInterior), in id order: among
+  // them every leaf that holds a vertex, meets an edge, lies in a vertex box
+  // or misses P (a kInterior leaf is inside P with no faces).
+  std::vector<std::int32_t> recorded_leaves() const;
   void init_root();
   // Thesis §4.1.1: "Whenever a box is split, we immediately determine whether any
   // of its children contains more than one component of P, and if so, we make
@@ -111,6 +115,7 @@ class QuadtreeBuilder {
   QuadMeshStats& stats_;
   QuadTree tree_;
   std::vector<NodeData> data_;
+  std::vector<std::int32_t> record_node_;  // per record of data_: its node (-1 for kInterior)
   std::vector<Rect> vertex_box_;
   std::vector<LoopEdge> segment_edge_;
   bool protect_edges_ = false;

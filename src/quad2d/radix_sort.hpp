@@ -1,7 +1,8 @@
 #pragma once
 // Stable least-significant-digit radix sort on an unsigned integer key of at
 // most `bits` bits (the mesher's large sorts: leaf corners, z-order). Linear
-// in the input, 11 bits per pass; a pass whose digit is the same for every
+// in the input, ceil(bits / 12) passes of equal digit width (at most 12 bits,
+// so the counters stay in cache); a pass whose digit is the same for every
 // element is skipped. Stable, so equal keys keep their input order: sorting
 // by a key and then by a second key orders by (second, first), and the
 // result never depends on anything but the input sequence (deterministic).
@@ -16,9 +17,11 @@ namespace pqmesh::quad2d {
 // is a buffer of the element type, reused between calls to save allocations.
 template <class T, class KeyFn>
 void radix_sort(std::vector<T>& v, int bits, KeyFn key, std::vector<T>& scratch) {
-  constexpr int kDigit = 11;
-  constexpr std::size_t kBuckets = std::size_t{1} << kDigit;
-  if (v.size() < 2) return;
+  if (v.size() < 2 || bits <= 0) return;
+  // Digits of at most 12 bits, as few passes as that allows, equal widths.
+  const int passes = (bits + 11) / 12;
+  const int kDigit = (bits + passes - 1) / passes;
+  const std::size_t kBuckets = std::size_t{1} << kDigit;
   scratch.resize(v.size());
   std::vector<std::size_t> start(kBuckets);
   for (int shift = 0; shift < bits; shift += kDigit) {

@@ -17,6 +17,8 @@ class SizeFunction2 {
   bool active() const { return max_size_ > 0 || !field_.points.empty(); }
   // The global cap (0: none); the field only asks for smaller boxes.
   double max_size() const { return max_size_; }
+  // No field: min_over is the same number for every square.
+  bool uniform() const { return field_.points.empty(); }
   // min over x in the closed square of f(x), f(x) = min(max_size, min_i sizes[i] + |x - points[i]|).
   double min_over(const Square& square) const;
 

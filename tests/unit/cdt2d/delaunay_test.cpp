@@ -64,6 +64,29 @@ TEST(CdtDelaunay, GridPointsInSeveralOrders) {
   }
 }
 
+// A rectilinear grid with unequal dyadic spacings: every cell is a rectangle
+// of its own shape, whose corners are exactly cocircular (the tie legalize()
+// recognises from coordinates alone, without incircle).
+TEST(CdtDelaunay, RectilinearGridWithUnequalSpacing) {
+  std::mt19937_64 rng(11);
+  for (int m : {3, 9, 30}) {
+    std::vector<double> xs{0}, ys{0};
+    for (int i = 1; i < m; ++i) xs.push_back(xs.back() + static_cast<double>(1 + rng() % 7) / 8);
+    for (int j = 1; j <= m; ++j) ys.push_back(ys.back() + static_cast<double>(1 + rng() % 5) / 16);
+    CdtInput in;
+    for (const double x : xs)
+      for (const double y : ys) in.points.push_back({x, y});
+    const std::string name = "rectilinear m=" + std::to_string(m);
+    const Tris rowmajor = constrained_delaunay(in, false).triangles;
+    expect_cdt(in.points, {}, rowmajor, name + " row-major");
+    EXPECT_EQ(static_cast<int>(rowmajor.size()), 2 * (m - 1) * m);  // two per cell
+    std::shuffle(in.points.begin(), in.points.end(), rng);
+    expect_cdt(in.points, {}, constrained_delaunay(in, false).triangles, name + " shuffled");
+    sort_z_order(in.points);
+    expect_cdt(in.points, {}, constrained_delaunay(in, false).triangles, name + " z-order");
+  }
+}
+
 // Points on concentric circles (exactly cocircular: Pythagorean triples).
 TEST(CdtDelaunay, CocircularPythagoreanPoints) {
   std::vector<Vec2> pts;

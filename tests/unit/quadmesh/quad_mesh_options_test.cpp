@@ -129,6 +129,30 @@ std::string bytes_of(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// The size phase under a global cap alone skips the balance step (it would
+// split nothing: quadtree_builder.cpp, run_phase). A size field whose sizes
+// never bind (each at least the cap, so min_over is the cap everywhere) asks
+// for exactly the same boxes but takes the balancing path: the two meshes must
+// be the same, vertex for vertex and triangle for triangle.
+TEST(QuadMeshOptions, UniformCapNeedsNoBalancingInTheSizePhase) {
+  for (const std::string name : {"square_holes.poly", "comb.poly", "l_shape.poly"}) {
+    const Domain2 d = corpus(name);
+    const double h = 0.02 * std::max(d.bbox_max.x - d.bbox_min.x, d.bbox_max.y - d.bbox_min.y);
+    QuadMeshOptions cap;
+    cap.max_size = h;
+    QuadMeshOptions field = cap;
+    field.size_field.points = {d.bbox_min, d.bbox_max};
+    field.size_field.sizes = {2 * h, 3 * h};
+    const QuadMeshResult a = checked(d, cap), b = checked(d, field);
+    EXPECT_GT(a.stats.splits_size, 0) << name;
+    EXPECT_EQ(a.stats.splits_size, b.stats.splits_size) << name;
+    EXPECT_EQ(a.stats.splits_balance, b.stats.splits_balance) << name;
+    EXPECT_EQ(a.stats.leaves, b.stats.leaves) << name;
+    EXPECT_EQ(a.mesh.vertices, b.mesh.vertices) << name;
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles) << name;
+  }
+}
+
 // CGAL's determinism test: mesh twice, write, compare bytes.
 TEST(QuadMeshOptions, OutputIsByteIdentical) {
   const auto dir = std::filesystem::temp_directory_path() / "pqmesh_quad_determinism";
