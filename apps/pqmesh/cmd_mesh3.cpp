@@ -1,15 +1,193 @@
-// pqmesh mesh on a 3D domain (issue 5): not available yet.
+// pqmesh mesh on a 3D domain (issue 5): tet_mesh (pqmesh/tetmesh.hpp), check
+// the result against the domain, write it, print a one-screen summary. As for
+// 2D (cmd_mesh.cpp): nothing is written unless the mesh passed check_mesh, and
+// write_mesh is atomic, so a failure never leaves a partial output file.
+// Exit codes: 0 written; 2 invalid input, or a leaf kind the box tetrahedra do
+// not handle yet (MeshNotSupported, issue 5 open); 64 usage; 70 a mesh that
+// fails the check (a bug; nothing written).
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "args.hpp"
 #include "commands.hpp"
+#include "load.hpp"
+#include "mv3d/octree_builder.hpp"
+#include "pqmesh/alpha.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/lfs3.hpp"
+#include "pqmesh/mesh_io.hpp"
+#include "pqmesh/quality.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "quality_fields.hpp"
+#include "report_format.hpp"
 
 namespace pqmesh::cli {
 
+// Defined in cmd_octree.cpp (the reader of `pqmesh octree --size-field`).
+mv3d::SizeField3 read_size_field3(const std::string& path);
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string fmt4(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g", v);
+  return buffer;
+}
+
+std::string fmt_seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", s);
+  return buffer;
+}
+
+// --format F for tetrahedra (no svg).
+std::optional<MeshFormat> format_option3(const Args& args) {
+  const auto text = args.option("--format");
+  if (!text) return std::nullopt;
+  if (*text == "vtu") return MeshFormat::Vtu;
+  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
+  if (*text == "msh22") return MeshFormat::Msh22;
+  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
+  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
+  throw UsageError("--format must be vtu, msh, msh22, mesh or node for a 3D mesh, got '" + *text + "'");
+}
+
+struct Mesh3Run {
+  std::string input, output;
+  MeshFormat format = MeshFormat::Vtu;
+  TetMeshOptions options;
+  TetMeshResult result;
+  CheckReport check;
+  LfsIntegral3 lfs;
+  double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0, seconds_write = 0;
+};
+
+void print_summary(const Domain3& domain, const Mesh3Run& run) {
+  const TetMesh3& mesh = run.result.mesh;
+  const TetMeshStats& s = run.result.stats;
+  std::cout << "input      " << run.input << " (3D, " << domain.plc.vertices.size() << " vertices, "
+            << domain.edges.size() << " edges, " << domain.plc.facets.size() << " facets, volume "
+            << fmt(domain.volume) << ")\n";
+  const TetSizeField& field = run.options.size_field;
+  if (run.options.max_size > 0 || !field.points.empty()) {
+    std::string sizing;
+    if (run.options.max_size > 0) sizing = "max size " + fmt(run.options.max_size);
+    if (!field.points.empty()) {
+      sizing += sizing.empty() ? "" : "; ";
+      sizing += "size field " + field.path + " (" + std::to_string(field.points.size()) +
+                (field.points.size() == 1 ? " point)" : " points)");
+    }
+    std::cout << "sizing     " << sizing << '\n';
+  }
+  const AlphaResult alpha = compute_alpha(domain.plc);
+  const QualityReport q = quality_report(mesh);
+  std::cout << "alpha      " << alpha.describe(domain.plc.source.first_id) << '\n'
+            << "mesh       " << mesh.tetrahedra.size() << " tetrahedra, " << mesh.vertices.size() << " vertices, "
+            << mesh.faces.size() << " boundary triangles\n"
+            << "quality    max aspect ratio " << fmt4(q.aspect_ratio.max) << " (tetrahedron " << q.aspect_ratio.argmax
+            << "), dihedral min " << fmt4(q.min_angle.min) << " deg, max " << fmt4(q.max_angle.max) << " deg\n"
+            << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
+            << " cells); tetrahedra / I3 = "
+            << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.tetrahedra.size()) / run.lfs.value) : "-")
+            << (run.options.max_size > 0 || !field.points.empty() ? " (I3 ignores the sizing)" : "") << '\n'
+            << "grid       "
+            << (run.options.generic_grid ? "generic, planes shifted by " +
+                                               fmt(Vec3{s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]})
+                                         : std::string("aligned"))
+            << "; root side " << fmt(s.root_size) << ", depth " << s.depth << '\n'
+            << "leaves     " << s.leaves << ":";
+  for (int k = 0; k < kTetLeafKinds; ++k)
+    std::cout << (k ? ", " : " ") << tet_leaf_kind_name(k) << ' ' << s.leaves_per_kind[static_cast<std::size_t>(k)];
+  std::cout << '\n'
+            << "boxes      " << s.empty_jobs << " empty (" << s.flush_leaves << " flush), " << s.facet_jobs
+            << " facet (inside " << s.facet_inside << ", on F " << s.facet_on << ", beyond " << s.facet_beyond
+            << "), " << s.edge_jobs << " edge, " << s.vertex_jobs << " vertex, " << s.two_facet_jobs << " two-facet; "
+            << s.touching_leaves << " touching leaves skipped; " << s.warped << " warped vertices\n"
+            << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)
+            << ", tetrahedra " << fmt_seconds(s.seconds_tetrahedra) << ", boundary " << fmt_seconds(s.seconds_boundary)
+            << "; mesh " << fmt_seconds(run.seconds_mesh) << ", check " << fmt_seconds(run.seconds_check) << ", lfs "
+            << fmt_seconds(run.seconds_lfs) << ", write " << fmt_seconds(run.seconds_write) << '\n'
+            << "check      " << run.check.to_text().substr(0, run.check.to_text().find('\n')) << '\n'
+            << "output     " << run.output << " (" << to_string(run.format) << ")\n";
+}
+
+// Progress on stderr, one line rewritten in place (only on a terminal).
+void show_progress(const TetMeshProgress& p) {
+  std::fprintf(stderr, "\r%-10s boxes %lld, jobs %lld, tetrahedra %lld, %.1f s   ", p.phase,
+               static_cast<long long>(p.boxes), static_cast<long long>(p.jobs), static_cast<long long>(p.tetrahedra),
+               p.seconds);
+  if (std::string(p.phase) == "done") std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
+}  // namespace
+
 int run_mesh3(const std::vector<std::string>& argv) {
   const Args args(argv, kMeshFlagsAnyMode, kMeshOptionsAnyMode);
-  std::cerr << "pqmesh mesh: " << args.positional()[0] << ": 3D meshing is not available yet (issue 5)\n";
-  return kExitInvalidInput;
+  args.expect_positional(1, 1);
+  for (const char* flag : {"--protect-edges", "--fixed-boundary"})
+    if (args.flag(flag)) throw UsageError(std::string(flag) + " is for 2D input only");
+  if (args.option("--refine-angle")) throw UsageError("--refine-angle is for 2D input only");
+  Mesh3Run run;
+  run.input = args.positional()[0];
+  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
+  if (!out) throw UsageError("-o OUTPUT is required");
+  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
+  run.output = *out;
+  if (args.option("--max-size")) {
+    run.options.max_size = args.number("--max-size", 0);  // throws UsageError unless a finite number
+    if (!(run.options.max_size > 0))
+      throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
+  }
+  run.options.generic_grid = !args.flag("--aligned-grid");
+  const std::optional<MeshFormat> forced = format_option3(args);
+  run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work
+  if (run.format == MeshFormat::Svg) throw UsageError("a 3D mesh cannot be written as .svg");
+  const bool quiet = args.flag("--quiet");
+
+  const LoadedDomain loaded = load_domain(run.input, read_options_from(args));
+  const Domain3& domain = std::get<Domain3>(loaded.domain);
+  if (const auto path = args.option("--size-field")) {
+    const mv3d::SizeField3 f = read_size_field3(*path);
+    run.options.size_field = {f.points, f.sizes, f.lines, f.path};
+  }
+  if (!quiet && isatty(fileno(stderr))) run.options.progress = show_progress;
+
+  auto start = Clock::now();
+  run.result = tet_mesh(domain, run.options);
+  run.seconds_mesh = seconds_since(start);
+
+  start = Clock::now();
+  run.check = check_mesh(run.result.mesh, domain);
+  run.seconds_check = seconds_since(start);
+  if (!run.check.valid()) {
+    std::cerr << "pqmesh mesh: internal error: the mesh of " << run.input << " fails the validity check\n"
+              << run.check.to_text() << "please report this as a bug; nothing was written\n";
+    return kExitInternal;
+  }
+  if (!quiet) {  // the size estimate is for the summary only
+    start = Clock::now();
+    run.lfs = lfs_integral(domain);
+    run.seconds_lfs = seconds_since(start);
+  }
+  start = Clock::now();
+  WriteOptions write;
+  write.format = run.format;
+  if (run.format == MeshFormat::Vtu) write.cell_fields = quality_fields(run.result.mesh);
+  write_mesh(run.result.mesh, run.output, write);
+  run.seconds_write = seconds_since(start);
+  if (!quiet) print_summary(domain, run);
+  return kExitOk;
 }
 
 }  // namespace pqmesh::cli

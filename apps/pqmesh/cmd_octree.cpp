@@ -17,6 +17,7 @@
 #include "mv3d/leaf_kind.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/errors.hpp"
+#include "report_format.hpp"
 
 namespace pqmesh::cli {
 namespace {
@@ -111,8 +112,11 @@ std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int3
   return s.str();
 }
 
-// The 3D size field of `pqmesh octree --size-field` (docs/FORMATS.md "3D size
-// fields"): one point per line, `x y z size`; the errors of the 2D reader
+}  // namespace
+
+// The 3D size field of `pqmesh octree --size-field` and of `pqmesh mesh` on 3D
+// input (cmd_mesh3.cpp declares it; docs/FORMATS.md "3D size fields"): one
+// point per line, `x y z size`; the errors of the 2D reader
 // (src/io/read_size_field.cpp), with four fields instead of three.
 mv3d::SizeField3 read_size_field3(const std::string& path) {
   detail::TextSource src(path);
@@ -142,10 +146,9 @@ mv3d::SizeField3 read_size_field3(const std::string& path) {
   return field;
 }
 
-}  // namespace
-
 int run_octree(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-merge"}, {"-o", "--output", "--merge-angle", "--max-size", "--size-field"});
+  const Args args(argv, {"--quiet", "--no-merge", "--generic-grid"},
+                  {"-o", "--output", "--merge-angle", "--max-size", "--size-field"});
   args.expect_positional(1, 1);
   const std::string& input = args.positional()[0];
   const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
@@ -162,6 +165,7 @@ int run_octree(const std::vector<std::string>& argv) {
       throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
   }
   if (const auto field = args.option("--size-field")) options.size_field = read_size_field3(*field);
+  options.generic_grid = args.flag("--generic-grid");
 
   const LoadedDomain loaded = load_domain(input, read_options_from(args));
   const auto* domain = std::get_if<Domain3>(&loaded.domain);
@@ -170,6 +174,7 @@ int run_octree(const std::vector<std::string>& argv) {
     return kExitInvalidInput;
   }
   const auto start = std::chrono::steady_clock::now();
+  const bool generic = options.generic_grid;
   mv3d::OctreeBuilder builder(*domain, std::move(options));
   builder.build();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -192,6 +197,12 @@ int run_octree(const std::vector<std::string>& argv) {
               << "leaves     " << s.leaves << " (" << s.outside_leaves << " outside P, " << protected_leaves
               << " protected, " << duplicate_leaves << " on duplicated cubes)\n"
               << "depth      " << deepest << " (root side " << builder.tree().root().size << ")\n"
+              << "grid       "
+              << (generic ? "generic, planes shifted by " + fmt(Vec3{builder.tree().root().offset[0],
+                                                                     builder.tree().root().offset[1],
+                                                                     builder.tree().root().offset[2]})
+                          : std::string("aligned"))
+              << '\n'
               << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", centering " << s.splits_centering << ", edge "
               << s.splits_edge << ", edge-separate " << s.splits_edge_separate << ", facet " << s.splits_facet
               << ", facet-separate " << s.splits_facet_separate << ", balance " << s.splits_balance << '\n'

@@ -2,11 +2,13 @@
 #include "mv3d/octree_builder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "pqmesh/errors.hpp"
 
@@ -14,8 +16,20 @@ namespace pqmesh::mv3d {
 
 namespace {
 
-RootCube<3> root_for(const Domain3& d) {
-  return choose_root_cube<3>({d.bbox_min.x, d.bbox_min.y, d.bbox_min.z}, {d.bbox_max.x, d.bbox_max.y, d.bbox_max.z});
+// The aligned root (choose_root_cube), or with generic_grid the shifted root
+// of choose_generic_root_cube over every input vertex coordinate.
+RootCube<3> root_for(const Domain3& d, bool generic) {
+  const std::array<double, 3> lo{d.bbox_min.x, d.bbox_min.y, d.bbox_min.z};
+  const std::array<double, 3> hi{d.bbox_max.x, d.bbox_max.y, d.bbox_max.z};
+  if (!generic) return choose_root_cube<3>(lo, hi);
+  std::array<std::vector<double>, 3> coords;
+  for (auto& c : coords) c.reserve(d.plc.vertices.size());
+  for (const Vec3& p : d.plc.vertices) {
+    coords[0].push_back(p.x);
+    coords[1].push_back(p.y);
+    coords[2].push_back(p.z);
+  }
+  return choose_generic_root_cube<3>(lo, hi, {coords[0], coords[1], coords[2]}, kTreeMaxLevel).root;
 }
 
 Vec3 centre_of(const Cube& c) { return 0.5 * (c.lo + c.hi); }
@@ -42,7 +56,13 @@ bool share(const std::vector<int>& a, const std::vector<int>& b) {
 }  // namespace
 
 OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
-    : domain_(domain), options_(std::move(options)), tree_(root_for(domain)) {
+    : domain_(domain), options_(std::move(options)), tree_(root_for(domain, options_.generic_grid)) {
+  // The tree must honour RootCube::offset: its root planes are origin + offset.
+  // (A Tree without offset support would silently mesh on the aligned grid.)
+  for (int a = 0; a < 3; ++a)
+    if (tree_.key_plane(tree_.key(0), a, false) != tree_.root().origin[a] + tree_.root().offset[a])
+      throw InternalError("mv3d octree: the generic grid needs RootCube::offset support in tree/tree_impl.hpp "
+                          "(key_plane ignores the offset)");
   const SizeField3& sf = options_.size_field;
   if (!std::isfinite(options_.max_size) || options_.max_size < 0)
     throw InvalidInput(ErrorCode::Syntax, "max size must be a positive finite number (0: none)", {});

@@ -80,6 +80,11 @@ struct OctreeOptions {
   // outside it); they cost about 10x the leaves (ALGORITHM.md §10). Off only
   // for callers that study other stages on smaller trees (the tet3d tests).
   bool separate = true;
+  // Generic grid (tree/root_cube.hpp choose_generic_root_cube; ALGORITHM.md
+  // §10): every box plane is shifted by a fixed offset so that no input vertex
+  // coordinate lies on a box plane of any level the tree may use. Off by
+  // default (the aligned grid; the existing octree tests use it).
+  bool generic_grid = false;
 };
 
 struct NodeData3 {

@@ -15,7 +15,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "pqmesh/errors.hpp"
 
@@ -25,6 +27,9 @@ template <int D>
 struct RootCube {
   std::array<double, D> origin{};  // integer multiple of size / 2
   double size = 1;                 // a power of two
+  // Generic grid (choose_generic_root_cube below): added to every box plane
+  // along each axis. Zero (the default): the aligned grid of the header comment.
+  std::array<double, D> offset{};
 };
 
 // Smallest admissible root cube (power-of-two side, origin on a multiple of half the
@@ -71,6 +76,120 @@ RootCube<D> choose_root_cube(const std::array<double, D>& lo, const std::array<d
     if (ok) return root;
   }
   throw InternalError("choose_root_cube: no representable root cube encloses the bounding box");
+}
+
+// ---- Generic grid (docs/ALGORITHM.md §10, "Generic grid")
+//
+// The thesis assumes general position; inputs with dyadic coordinates (a unit
+// cube at the origin) put facets in box planes and edges on box edges. The
+// generic root is an aligned root (choose_root_cube) whose planes are all
+// shifted by an offset `off` per axis, chosen so that no input coordinate
+// lies on a box plane of any level <= max_level (returned).
+//
+// Exactness. Let g = S * 2^-(max_level + 2) and off = K * g with K odd. A
+// plane of level L <= max_level is origin + off + N * S / 2^(L+1), an integer
+// times g (origin is a multiple of S/2), and every such number of magnitude
+// <= bound is an exact double when bound <= 2^53 * g; `bound` covers the root
+// and its extended box (2S on each side). max_level is the largest level
+// (<= kTreeMaxLevel of tree/key.hpp, passed as `deepest`) with that property.
+// Since K is odd, off is not a multiple of the level-max_level spacing 2g, so
+// the planes of every level <= max_level (a subset of the level-max_level
+// planes) are all shifted off the aligned grid.
+//
+// Which coordinates hit a plane. Every plane of level <= max_level is among
+// the planes of level max_level, origin + off + n * 2g, and origin is a
+// multiple of 2g, so c lies on some plane iff c - off is a multiple of 2g,
+// i.e. iff c is an ODD multiple of g (K is odd). A coordinate with bits
+// finer than g (0.1) or an even multiple of g (0.5, 1) never does, whatever
+// the offset's coarser bits. The test is exact: the plane numbers around the
+// floating-point estimate of n are compared as exact doubles (the estimate is
+// off by less than 1).
+//
+// Offsets. off/S = the fraction of (a + 1) * 0.6180339887498949 (the golden
+// ratio's fraction, a double constant: the same on every machine) scaled to
+// [0, 1/32), rounded down to a multiple of 2g, plus g: its coarse bits place
+// dyadic coordinates at irregular positions inside the boxes of every level,
+// not at a tiny distance from a plane. If a coordinate is an odd multiple of
+// g, the next candidate lowers max_level by one (g doubles: c is then an odd
+// multiple of g/2, on no plane); a number is an odd multiple of exactly one
+// power of two, so with n coordinates at most n candidates fail. After 24
+// failures (or if the root does not hold the input box strictly) the margin
+// doubles. In practice candidate 0 is taken (the whole corpus).
+template <int D>
+struct GenericRoot {
+  RootCube<D> root;          // root.offset is the shift
+  std::int32_t max_level = 0;  // deepest level whose planes stay exact and miss every coordinate
+  int candidate = 0;           // levels given up below the deepest exact one (0 unless a coordinate hit a plane)
+};
+
+namespace detail {
+
+// True when c lies on a plane base + n * 2g (n an integer, base = origin +
+// off, g = 2^ge), i.e. on a box plane of level max_level. Exact comparisons
+// only (see above).
+inline bool on_generic_plane(double c, double origin, double off, int ge) {
+  const double step = std::ldexp(2.0, ge);
+  const double t = std::floor((c - (origin + off)) / step);
+  // base / g and candidate plane numbers are integers below 2^53 (bound check).
+  const double base_units = std::ldexp(origin, -ge) + std::ldexp(off, -ge);
+  for (double k = t - 1; k <= t + 1; k += 1) {
+    const double plane = std::ldexp(base_units + 2 * k, ge);  // exact: an integer < 2^53 times g
+    if (plane == c) return true;
+  }
+  return false;
+}
+
+}  // namespace detail
+
+// coords[a]: every input coordinate along axis a. `deepest`: the finest level
+// a tree may use (kTreeMaxLevel). Throws InternalError for non-finite input or
+// when no candidate is found.
+template <int D>
+GenericRoot<D> choose_generic_root_cube(const std::array<double, D>& lo, const std::array<double, D>& hi,
+                                        const std::array<std::span<const double>, D>& coords, int deepest) {
+  constexpr double kGolden = 0.6180339887498949;
+  for (int a = 0; a < D; ++a)
+    for (const double c : coords[a])
+      if (!std::isfinite(c)) throw InternalError("choose_generic_root_cube: non-finite coordinate");
+  for (double margin = 0.25; margin < 1e6; margin *= 2) {
+    const RootCube<D> base = choose_root_cube<D>(lo, hi, margin);
+    int se = 0;
+    std::frexp(base.size, &se);
+    se -= 1;  // size = 2^se
+    double reach = 0;  // largest |plane| of the root and its extended box, offset included
+    for (int a = 0; a < D; ++a)
+      reach = std::fmax(reach, std::fmax(std::fabs(base.origin[a]), std::fabs(base.origin[a] + base.size)));
+    reach += 2.0 * base.size + base.size / 32;
+    // Largest L with reach <= 2^53 * S * 2^-(L+2), i.e. reach / S <= 2^(51 - L).
+    std::int32_t top = deepest;
+    while (top > 1 && reach / base.size > std::ldexp(1.0, 51 - top)) --top;
+    if (reach / base.size > std::ldexp(1.0, 51 - top))
+      throw InternalError("choose_generic_root_cube: coordinates too large for an exact grid");
+    for (int j = 0; j < 24 && top - j >= 1; ++j) {
+      const std::int32_t level = top - j;
+      const int ge = se - level - 2;  // g = 2^ge
+      if (ge < -1021) continue;
+      GenericRoot<D> out;
+      out.root = base;
+      out.max_level = level;
+      out.candidate = j;
+      bool ok = true;
+      for (int a = 0; a < D && ok; ++a) {
+        const double x = static_cast<double>(a + 1) * kGolden;
+        const double frac = x - std::floor(x);  // in [0, 1)
+        // K = 2 * floor(frac / 32 * 2^(level + 1)) + 1: off = K * g < S / 32.
+        const double half_units = std::floor(std::ldexp(frac, level + 1 - 5));
+        const double off = std::ldexp(2 * half_units + 1, ge);
+        out.root.offset[a] = off;
+        const double o = base.origin[a] + off;  // exact (see above)
+        ok = o < lo[a] && o + base.size > hi[a];
+        for (std::size_t i = 0; ok && i < coords[a].size(); ++i)
+          ok = !detail::on_generic_plane(coords[a][i], base.origin[a], off, ge);
+      }
+      if (ok) return out;
+    }
+  }
+  throw InternalError("choose_generic_root_cube: no generic offset found");
 }
 
 }  // namespace pqmesh

@@ -274,6 +274,7 @@ class Tree {
 
   RootCube<D> root_;
   std::int64_t root_m_[D] = {};  // root origin / (S / 2), integers
+  double root_off_[D] = {};      // RootCube::offset (generic grid), added to every plane
   int root_exp_ = 0;             // S = 2^root_exp_
   std::int32_t max_level_ = 0;
   // half_side_[L] = 2^(root_exp_ - L - 1), L <= max_level_: normal doubles, so

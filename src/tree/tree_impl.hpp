@@ -27,6 +27,24 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
   while (max_level_ > 0 &&
          (worst + 2 > (std::int64_t{1} << (53 - max_level_)) || root_exp_ - max_level_ - 1 < -1021))
     --max_level_;
+  // Generic grid (root_cube.hpp choose_generic_root_cube): every plane is
+  // shifted by offset[a] = K * 2^ge. Planes stay integers times 2^ge when the
+  // spacing at max_level_ is at least 2^(ge+1), and exact doubles when their
+  // magnitude (root and extended box: |origin| + 3S + |offset|) is <= 2^(53+ge).
+  for (int a = 0; a < D; ++a) {
+    const double off = root.offset[a];
+    root_off_[a] = off;
+    if (off == 0) continue;
+    if (!std::isfinite(off)) throw InternalError("tree: root offset is not finite");
+    int oe = 0;
+    std::frexp(off, &oe);
+    int ge = oe - 53;  // off is an integer times 2^ge; raise ge to off's lowest set bit
+    while (std::ldexp(off, -(ge + 1)) == std::floor(std::ldexp(off, -(ge + 1)))) ++ge;
+    while (max_level_ > 0 && root_exp_ - max_level_ - 1 < ge + 1) --max_level_;
+    const double reach = std::fabs(root.origin[a]) + 3 * root.size + std::fabs(off);
+    if (!(reach <= std::ldexp(1.0, 53 + ge)))
+      throw InternalError("tree: root offset along axis " + std::to_string(a) + " is too fine for exact box planes");
+  }
   for (std::int32_t l = 0; l <= max_level_; ++l) half_side_[static_cast<std::size_t>(l)] = std::ldexp(1.0, root_exp_ - l - 1);
   nodes_.push_back(Node{});
   link_key_new(0, 0);
@@ -36,8 +54,8 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
 template <int D>
 double Tree<D>::key_plane(const Key& k, int axis, bool upper) const {
   const std::int64_t n = (root_m_[axis] << k.level) + k.q[axis] + (upper ? 2 : 0);
-  if (k.level <= max_level_) return static_cast<double>(n) * half_side_[static_cast<std::size_t>(k.level)];
-  return std::ldexp(static_cast<double>(n), root_exp_ - k.level - 1);
+  if (k.level <= max_level_) return static_cast<double>(n) * half_side_[static_cast<std::size_t>(k.level)] + root_off_[axis];
+  return std::ldexp(static_cast<double>(n), root_exp_ - k.level - 1) + root_off_[axis];
 }
 
 template <int D>

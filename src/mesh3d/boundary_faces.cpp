@@ -1,0 +1,172 @@
+#include "mesh3d/boundary_faces.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::mesh3d {
+
+namespace {
+
+struct FaceRecord {
+  std::array<int, 3> sorted;
+  std::int32_t tet;
+  std::int8_t face;
+};
+
+// Outward faces of a positive tetrahedron (a, b, c, d).
+std::array<int, 3> outward_face(const std::array<int, 4>& k, int i) {
+  switch (i) {
+    case 0: return {k[0], k[2], k[1]};
+    case 1: return {k[0], k[1], k[3]};
+    case 2: return {k[1], k[2], k[3]};
+    default: return {k[0], k[3], k[2]};
+  }
+}
+
+class FacetFinder {
+ public:
+  explicit FacetFinder(const Domain3& d) : d_(d), tris_of_(d.plc.facets.size()) {
+    for (std::size_t t = 0; t < d.facet_triangles.size(); ++t)
+      tris_of_[static_cast<std::size_t>(d.facet_triangle_owner[t])].push_back(static_cast<int>(t));
+  }
+
+  // All three vertices (mesh ids v, coordinates p) pass within_ulp_of_plane
+  // for f's plane. Answers are cached per (vertex, facet): a vertex on a
+  // facet is shared by about six boundary triangles, and the test is exact
+  // arithmetic (GMP) for points on the plane.
+  bool on_plane(int f, const std::array<int, 3>& v, const std::array<Vec3, 3>& p) {
+    const auto& list = tris_of_[static_cast<std::size_t>(f)];
+    if (list.empty()) return false;
+    const auto& tri = d_.facet_triangles[static_cast<std::size_t>(list.front())];
+    const Vec3 &a = vtx(tri[0]), &b = vtx(tri[1]), &c = vtx(tri[2]);
+    for (int i = 0; i < 3; ++i) {
+      const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v[static_cast<std::size_t>(i)])) << 32) |
+                                static_cast<std::uint32_t>(f);
+      auto it = cache_.find(key);
+      if (it == cache_.end()) it = cache_.emplace(key, within_ulp_of_plane(p[static_cast<std::size_t>(i)], a, b, c)).first;
+      if (!it->second) return false;
+    }
+    return true;
+  }
+
+  // The projected point lies in a facet triangle of f (closed).
+  bool contains(int f, Vec3 q) const {
+    const Vec3 n = d_.facet_normals[static_cast<std::size_t>(f)];
+    const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+    const int drop = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    for (const int t : tris_of_[static_cast<std::size_t>(f)]) {
+      const auto& tri = d_.facet_triangles[static_cast<std::size_t>(t)];
+      const Vec3 &a = vtx(tri[0]), &b = vtx(tri[1]), &c = vtx(tri[2]);
+      const Sign s = orient2d_projected(a, b, c, drop);
+      if (s == Sign::Zero) continue;
+      if (orient2d_projected(a, b, q, drop) != -s && orient2d_projected(b, c, q, drop) != -s &&
+          orient2d_projected(c, a, q, drop) != -s)
+        return true;
+    }
+    return false;
+  }
+
+ private:
+  const Vec3& vtx(int v) const { return d_.plc.vertices[static_cast<std::size_t>(v)]; }
+  const Domain3& d_;
+  std::vector<std::vector<int>> tris_of_;
+  std::unordered_map<std::uint64_t, bool> cache_;
+};
+
+}  // namespace
+
+void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf, TetMesh3& mesh) {
+  const Domain3& d = builder.domain();
+  // Faces of exactly one tetrahedron. Each face is keyed by its sorted vertex
+  // triple; with fewer than 2^21 vertices the triple packs into one 64-bit
+  // integer (sorting those is several times faster than sorting triples).
+  std::vector<std::pair<std::int32_t, std::int8_t>> singles;
+  if (mesh.vertices.size() < (std::size_t{1} << 21)) {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;  // (packed triple, tet * 4 + face)
+    keys.reserve(4 * mesh.tetrahedra.size());
+    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+      for (int i = 0; i < 4; ++i) {
+        std::array<int, 3> s3 = outward_face(mesh.tetrahedra[t], i);
+        std::sort(s3.begin(), s3.end());
+        const std::uint64_t k = (static_cast<std::uint64_t>(s3[0]) << 42) | (static_cast<std::uint64_t>(s3[1]) << 21) |
+                                static_cast<std::uint64_t>(s3[2]);
+        keys.push_back({k, static_cast<std::uint32_t>(4 * t + static_cast<std::size_t>(i))});
+      }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size();) {
+      std::size_t j = i + 1;
+      while (j < keys.size() && keys[j].first == keys[i].first) ++j;
+      if (j == i + 1)
+        singles.push_back({static_cast<std::int32_t>(keys[i].second / 4), static_cast<std::int8_t>(keys[i].second % 4)});
+      i = j;
+    }
+  } else {
+    std::vector<FaceRecord> recs;
+    recs.reserve(4 * mesh.tetrahedra.size());
+    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+      for (int i = 0; i < 4; ++i) {
+        std::array<int, 3> s3 = outward_face(mesh.tetrahedra[t], i);
+        std::sort(s3.begin(), s3.end());
+        recs.push_back({s3, static_cast<std::int32_t>(t), static_cast<std::int8_t>(i)});
+      }
+    std::sort(recs.begin(), recs.end(), [](const FaceRecord& x, const FaceRecord& y) {
+      return x.sorted != y.sorted ? x.sorted < y.sorted : (x.tet != y.tet ? x.tet < y.tet : x.face < y.face);
+    });
+    for (std::size_t i = 0; i < recs.size();) {
+      std::size_t j = i + 1;
+      while (j < recs.size() && recs[j].sorted == recs[i].sorted) ++j;
+      if (j == i + 1) singles.push_back({recs[i].tet, recs[i].face});
+      i = j;
+    }
+  }
+  std::sort(singles.begin(), singles.end());
+
+  FacetFinder finder(d);
+  std::vector<int> candidates;
+  mesh.faces.clear();
+  mesh.face_markers.clear();
+  mesh.faces.reserve(singles.size());
+  mesh.face_markers.reserve(singles.size());
+  for (const auto& [t, i] : singles) {
+    const std::array<int, 3> f = outward_face(mesh.tetrahedra[static_cast<std::size_t>(t)], i);
+    const std::array<Vec3, 3> p = {mesh.vertices[static_cast<std::size_t>(f[0])],
+                                   mesh.vertices[static_cast<std::size_t>(f[1])],
+                                   mesh.vertices[static_cast<std::size_t>(f[2])]};
+    const std::int32_t leaf = tet_leaf[static_cast<std::size_t>(t)];
+    const mv3d::NodeData3& nd = builder.data(leaf);
+    candidates.assign(nd.facets.begin(), nd.facets.end());
+    for (const int ct : nd.cube_tris) candidates.push_back(d.facet_triangle_owner[static_cast<std::size_t>(ct)]);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    int found = -1, matches = 0;
+    for (const int c : candidates)
+      if (finder.on_plane(c, f, p)) {
+        ++matches;
+        if (found < 0) found = c;
+      }
+    if (matches > 1) {  // coplanar facets: the one holding the centroid
+      const Vec3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
+      found = -1;
+      for (const int c : candidates)
+        if (finder.on_plane(c, f, p) && finder.contains(c, g)) {
+          found = c;
+          break;
+        }
+    }
+    if (found < 0)
+      throw InternalError("mesh3d: boundary triangle (" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " +
+                          std::to_string(f[2]) + ") of tetrahedron " + std::to_string(t) + " in leaf " +
+                          std::to_string(leaf) + " lies on no input facet of its leaf");
+    mesh.faces.push_back(f);
+    mesh.face_markers.push_back(d.plc.facets[static_cast<std::size_t>(found)].marker);
+  }
+}
+
+}  // namespace pqmesh::mesh3d

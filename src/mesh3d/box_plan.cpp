@@ -1,0 +1,116 @@
+#include "mesh3d/box_plan.hpp"
+
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "pqmesh/domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "tet3d/box_jobs.hpp"
+#include "tet3d/empty_boxes.hpp"
+#include "tet3d/grid_point.hpp"
+
+namespace pqmesh::mesh3d {
+
+namespace {
+
+// Every facet triangle meeting the closed cube of leaf n lies in a closed
+// half-space bounded by a cube plane that misses the open cube (exact
+// comparisons of input coordinates with the exact box planes).
+bool faces_on_boundary_only(const mv3d::OctreeBuilder& builder, std::int32_t n) {
+  const Domain3& dom = builder.domain();
+  const mv3d::Cube c = builder.cube(n);
+  const double lo[3] = {c.lo.x, c.lo.y, c.lo.z};
+  const double hi[3] = {c.hi.x, c.hi.y, c.hi.z};
+  for (const int t : builder.data(n).cube_tris) {
+    const auto& tri = dom.facet_triangles[static_cast<std::size_t>(t)];
+    bool separated = false;
+    for (int a = 0; a < 3 && !separated; ++a) {
+      bool below = true, above = true;
+      for (const int v : tri) {
+        const Vec3& p = dom.plc.vertices[static_cast<std::size_t>(v)];
+        const double x = a == 0 ? p.x : (a == 1 ? p.y : p.z);
+        below = below && x <= lo[a];
+        above = above && x >= hi[a];
+      }
+      separated = below || above;
+    }
+    if (!separated) return false;
+  }
+  return true;
+}
+
+std::string describe_leaf(const mv3d::OctreeBuilder& builder, std::int32_t n, const mv3d::LeafFaces& faces) {
+  const mv3d::Cube c = builder.cube(n);
+  std::ostringstream s;
+  s.precision(17);
+  s << "box [" << c.lo.x << ", " << c.hi.x << "] x [" << c.lo.y << ", " << c.hi.y << "] x [" << c.lo.z << ", "
+    << c.hi.z << "] (level " << builder.tree().level(n) << "), " << faces.vertices.size() << " vertices, "
+    << faces.edges.size() << " edges, " << faces.facets.size() << " facets";
+  if (faces.vertex_owner >= 0) s << ", in the united box of vertex " << faces.vertex_owner;
+  return s.str();
+}
+
+}  // namespace
+
+BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder) {
+  BoxPlan plan;
+  const mv3d::LeafClassifier classifier(builder.domain());
+  for (const std::int32_t n : builder.leaves_by_id()) {
+    ++plan.leaves;
+    const mv3d::LeafFaces faces = mv3d::leaf_faces(builder, n);
+    const mv3d::LeafClass cls = classifier.classify(faces);
+    ++plan.leaves_per_kind[static_cast<std::size_t>(cls.kind)];
+    if (cls.kind == mv3d::LeafKind::Outside) continue;
+    if (cls.kind == mv3d::LeafKind::EmptyInside) {
+      plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = -1});
+      ++plan.empty_jobs;
+      continue;
+    }
+    if (faces_on_boundary_only(builder, n)) {
+      const Vec3 centre = tet3d::grid_coordinates(builder.tree(), tet3d::key_centre(builder.tree().key(n)));
+      if (locate(builder.domain(), centre) == Location::Inside) {
+        plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = -1});
+        ++plan.flush;
+        ++plan.empty_jobs;
+      } else {
+        ++plan.touching;
+      }
+      continue;
+    }
+    if (cls.kind == mv3d::LeafKind::FacetCone) {
+      plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = cls.apex});
+      ++plan.facet_jobs;
+      continue;
+    }
+    throw MeshNotSupported(n, mv3d::to_string(cls.kind),
+                           "leaf " + std::to_string(n) + " (" + describe_leaf(builder, n, faces) + "): kind " +
+                               mv3d::to_string(cls.kind) + ", not supported yet (issue 5)");
+  }
+  return plan;
+}
+
+BoxPlan plan_all_kinds(const mv3d::OctreeBuilder& builder) {
+  tet3d::BoxJobs bj = tet3d::box_jobs(builder);
+  if (!bj.problems.empty())
+    throw MeshNotSupported(-1, "problem",
+                           bj.problems.front() + ": not supported yet (issue 5; " + std::to_string(bj.problems.size()) +
+                               " leaves not covered)");
+  BoxPlan plan;
+  plan.leaves_per_kind = bj.leaves;
+  for (const std::int64_t k : bj.leaves) plan.leaves += k;
+  for (const tet3d::BoxJob& j : bj.jobs) {
+    switch (j.kind) {
+      case tet3d::BoxKind::Empty: ++plan.empty_jobs; break;
+      case tet3d::BoxKind::Facet: ++plan.facet_jobs; break;
+      case tet3d::BoxKind::Edge: ++plan.edge_jobs; break;
+      case tet3d::BoxKind::Vertex: ++plan.vertex_jobs; break;
+      case tet3d::BoxKind::TwoFacet: ++plan.two_facet_jobs; break;
+      case tet3d::BoxKind::FromFacet: (j.facet < 0 ? plan.empty_jobs : plan.facet_jobs)++; break;
+    }
+  }
+  plan.jobs = std::move(bj.jobs);
+  return plan;
+}
+
+}  // namespace pqmesh::mesh3d

@@ -1,0 +1,121 @@
+// The 3D pipeline of pqmesh/tetmesh.hpp: octree, leaf kinds and box jobs,
+// box tetrahedra, boundary triangles with facet markers, region attributes.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "mesh3d/boundary_faces.hpp"
+#include "mesh3d/box_plan.hpp"
+#include "mv3d/octree_builder.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "tet3d/box_faces.hpp"
+#include "tet3d/facet_boxes.hpp"
+
+namespace pqmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Region attribute of every tetrahedron. A validated Domain3 is one connected
+// polyhedron without internal facets, so it is one region: the attribute of
+// the first region point (input order) that lies in P (exact locate, boundary
+// counts), else 0. Region points outside P are ignored, as TetGen ignores
+// them.
+// TetMesh3 markers are integers: the attribute rounded to the nearest one
+// (0 when it does not fit an int).
+int region_attribute(const Domain3& domain) {
+  for (const Region3& r : domain.plc.regions)
+    if (locate(domain, r.point) != Location::Outside)
+      return std::fabs(r.attribute) < 2147483647.0 ? static_cast<int>(std::lround(r.attribute)) : 0;
+  return 0;
+}
+
+}  // namespace
+
+const char* tet_leaf_kind_name(int kind) {
+  static constexpr const char* kNames[kTetLeafKinds] = {"outside", "empty", "vertex", "edge",
+                                                        "facet",   "two-facet", "other"};
+  return kind >= 0 && kind < kTetLeafKinds ? kNames[kind] : "?";
+}
+
+MeshNotSupported::MeshNotSupported(std::int64_t leaf, std::string kind, const std::string& detail)
+    : InvalidInput(ErrorCode::Unsupported, detail, {leaf}), kind_(std::move(kind)) {}
+
+TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
+  const auto t0 = Clock::now();
+  TetMeshResult out;
+  TetMeshStats& s = out.stats;
+  TetMeshProgress progress;
+  auto report = [&](const char* phase) {
+    if (!options.progress) return;
+    progress.phase = phase;
+    progress.seconds = since(t0);
+    options.progress(progress);
+  };
+
+  report("octree");
+  mv3d::OctreeOptions oo;
+  oo.max_size = options.max_size;
+  oo.size_field.points = options.size_field.points;
+  oo.size_field.sizes = options.size_field.sizes;
+  oo.size_field.lines = options.size_field.lines;
+  oo.size_field.path = options.size_field.path;
+  oo.separate = true;
+  oo.generic_grid = options.generic_grid;
+  auto t = Clock::now();
+  mv3d::OctreeBuilder builder(domain, std::move(oo));
+  builder.build();
+  s.seconds_octree = since(t);
+  s.root_size = builder.tree().root().size;
+  for (int a = 0; a < 3; ++a) s.grid_offset[static_cast<std::size_t>(a)] = builder.tree().root().offset[static_cast<std::size_t>(a)];
+
+  t = Clock::now();
+  progress.boxes = builder.tree().leaf_count();
+  report("classify");
+  // Aligned grid: empty and facet boxes, flush leaves as empty boxes (the
+  // grid-aligned models); generic grid: every kind (tet3d/box_jobs.hpp).
+  const mesh3d::BoxPlan plan =
+      options.generic_grid ? mesh3d::plan_all_kinds(builder) : mesh3d::plan_boxes(builder);
+  s.leaves = plan.leaves;
+  for (int k = 0; k < kTetLeafKinds; ++k)
+    s.leaves_per_kind[static_cast<std::size_t>(k)] = plan.leaves_per_kind[static_cast<std::size_t>(k)];
+  s.flush_leaves = plan.flush;
+  s.touching_leaves = plan.touching;
+  s.empty_jobs = plan.empty_jobs;
+  s.facet_jobs = plan.facet_jobs;
+  s.edge_jobs = plan.edge_jobs;
+  s.vertex_jobs = plan.vertex_jobs;
+  s.two_facet_jobs = plan.two_facet_jobs;
+  for (const std::int32_t n : builder.leaves_by_id()) s.depth = std::max(s.depth, builder.tree().level(n));
+  s.seconds_classify = since(t);
+
+  t = Clock::now();
+  progress.jobs = static_cast<std::int64_t>(plan.jobs.size());
+  report("tetrahedra");
+  tet3d::BoxMeshOptions bo;
+  bo.warp = options.warp;
+  tet3d::BoxMesh boxes = tet3d::mesh_boxes(builder.tree(), tet3d::CornerSet(builder), domain, plan.jobs, bo);
+  s.facet_inside = boxes.stats.inside;
+  s.facet_on = boxes.stats.on_facet;
+  s.facet_beyond = boxes.stats.beyond;
+  s.warped = boxes.warped;
+  s.seconds_tetrahedra = since(t);
+  progress.tetrahedra = static_cast<std::int64_t>(boxes.mesh.tetrahedra.size());
+
+  t = Clock::now();
+  report("boundary");
+  out.mesh = std::move(boxes.mesh);
+  mesh3d::add_boundary_faces(builder, boxes.tet_leaf, out.mesh);
+  s.boundary_faces = static_cast<std::int64_t>(out.mesh.faces.size());
+  out.mesh.tetrahedron_markers.assign(out.mesh.tetrahedra.size(), region_attribute(domain));
+  s.seconds_boundary = since(t);
+  report("done");
+  return out;
+}
+
+}  // namespace pqmesh
