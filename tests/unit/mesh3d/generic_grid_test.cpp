@@ -107,25 +107,20 @@ TEST(GenericGrid, CoincidenceMovesToTheNextCandidate) {
   expect_generic("forced", c, g1, lo, hi);
 }
 
-// Whether Tree<3> honours RootCube::offset (tree/tree_impl.hpp key_plane).
-bool tree_supports_offset() {
+// Tree<3> adds RootCube::offset to its planes (tree/tree_impl.hpp key_plane).
+TEST(GenericGrid, TreePlanesCarryTheOffset) {
   RootCube<3> r;
   r.origin = {-2, -2, -2};
   r.size = 4;
   r.offset = {0x1p-40, 0x1p-40, 0x1p-40};
   const OctTree t(r);
-  return t.key_plane(t.key(0), 0, false) == -2 + 0x1p-40;
+  EXPECT_EQ(t.key_plane(t.key(0), 0, false), -2 + 0x1p-40);
+  EXPECT_EQ(t.key_plane(t.key(0), 2, true), 2 + 0x1p-40);
 }
 
 // On the generic grid every leaf plane misses every input coordinate; the
-// cube then has vertex, edge and facet boxes, which the box tetrahedra do not
-// all handle yet: tet_mesh must stop with MeshNotSupported (or, once they do,
-// give a valid mesh).
-TEST(GenericGrid, OctreeLeavesMissCoordinatesAndMeshingIsHonest) {
-  if (!tree_supports_offset()) {
-    std::printf("SKIPPED: Tree<3> ignores RootCube::offset (the tree patch of the generic grid is not applied)\n");
-    GTEST_SKIP() << "Tree<3> ignores RootCube::offset";
-  }
+// cube then has vertex, edge and facet boxes, and its mesh is valid.
+TEST(GenericGrid, OctreeLeavesMissCoordinatesAndTheMeshIsValid) {
   const Domain3 d = make_domain(read_plc(test::data_path("3d/cube.poly")));
   mv3d::OctreeOptions oo;
   oo.generic_grid = true;
@@ -146,14 +141,11 @@ TEST(GenericGrid, OctreeLeavesMissCoordinatesAndMeshingIsHonest) {
     }
   }
   std::printf("cube on the generic grid: %lld leaves\n", static_cast<long long>(leaves));
-  try {
-    const TetMeshResult r = tet_mesh(d);
-    const CheckReport rep = check_mesh(r.mesh, d);
-    EXPECT_TRUE(rep.valid()) << rep.to_text();
-  } catch (const MeshNotSupported& e) {
-    std::printf("cube on the generic grid: %s\n", e.what());
-    EXPECT_NE(std::string(e.what()).find("not supported yet (issue 5)"), std::string::npos);
-  }
+  const TetMeshResult r = tet_mesh(d);
+  const CheckReport rep = check_mesh(r.mesh, d);
+  EXPECT_TRUE(rep.valid()) << rep.to_text();
+  EXPECT_GT(r.stats.edge_jobs, 0);
+  EXPECT_GT(r.stats.vertex_jobs, 0);
 }
 
 }  // namespace

@@ -1,0 +1,128 @@
+// tet_mesh with its defaults (generic grid, every box kind) on corpus models,
+// checked whole, and the geodesic grading of issue 5 item 6.
+//
+// Every run: check_mesh valid (volume, conformity, every facet recovered by
+// the boundary triangles); every boundary triangle carries the marker of a
+// facet whose plane passes through each of its vertices' ulp boxes
+// (within_ulp_of_plane, the checker's rule for rounded boundary points,
+// ALGORITHM.md §5), decided here independently of the mesher's own choice.
+// Quality is printed, not asserted: without the first warping pass (§4.3)
+// the aspect ratio is not yet bounded by C / alpha (ALGORITHM.md §13).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+#include <string>
+
+#include "../mv3d/octree_test_util.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/quality.hpp"
+#include "pqmesh/read_domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "predicates/predicates.hpp"
+#include "support/paths.hpp"
+
+namespace pqmesh {
+namespace {
+
+// Three non-collinear vertices of facet f's outer loop.
+bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {
+  const auto& loop = d.plc.facets[f].loops[0];
+  const auto& P = d.plc.vertices;
+  for (std::size_t k = 2; k < loop.size(); ++k) {
+    a = P[loop[0]], b = P[loop[1]], c = P[loop[k]];
+    if (norm(cross(b - a, c - a)) != 0) return true;
+  }
+  return false;
+}
+
+TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
+  const TetMeshResult r = tet_mesh(d);
+  const CheckReport c = check_mesh(r.mesh, d);
+  EXPECT_TRUE(c.valid()) << what << "\n" << c.to_text();
+  EXPECT_EQ(r.mesh.face_markers.size(), r.mesh.faces.size());
+  std::set<int> used, input;
+  for (const Facet3& f : d.plc.facets) input.insert(f.marker);
+  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
+    const int m = r.mesh.face_markers[i];
+    used.insert(m);
+    bool on_some = false;
+    for (std::size_t f = 0; f < d.plc.facets.size() && !on_some; ++f) {
+      Vec3 a, b, e;
+      if (d.plc.facets[f].marker != m || !facet_plane(d, f, a, b, e)) continue;
+      bool all = true;
+      for (const int v : r.mesh.faces[i]) all = all && within_ulp_of_plane(r.mesh.vertices[v], a, b, e);
+      on_some = all;
+    }
+    EXPECT_TRUE(on_some) << what << ": boundary triangle " << i << " (marker " << m
+                         << ") is not within an ulp of a facet with that marker";
+    if (!on_some) break;
+  }
+  EXPECT_EQ(used, input) << what;
+  const QualityReport q = quality_report(r.mesh);
+  const TetMeshStats& s = r.stats;
+  std::printf("%-18s %zu tets; jobs empty %lld, facet %lld, edge %lld, vertex %lld, two-facet %lld; "
+              "aspect max %.1f, dihedral %.2f..%.2f deg\n",
+              what.c_str(), r.mesh.tetrahedra.size(), static_cast<long long>(s.empty_jobs),
+              static_cast<long long>(s.facet_jobs), static_cast<long long>(s.edge_jobs),
+              static_cast<long long>(s.vertex_jobs), static_cast<long long>(s.two_facet_jobs), q.aspect_ratio.max,
+              q.min_angle.min, q.max_angle.max);
+  return r;
+}
+
+class GenericCorpus : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GenericCorpus, ValidWithFacetMarkers) {
+  const Domain3 d = make_domain(read_plc(test::data_path(std::string("3d/") + GetParam())));
+  mesh_and_check(GetParam(), d);
+}
+
+// The fast models run in every test; the others (0.5-10 s each in Release,
+// measured in ALGORITHM.md §13) are disabled for test time and run with
+// --gtest_also_run_disabled_tests.
+INSTANTIATE_TEST_SUITE_P(Fast, GenericCorpus, ::testing::Values("cube.poly", "l_block.poly", "tuning_fork.poly"));
+INSTANTIATE_TEST_SUITE_P(DISABLED_Slow, GenericCorpus,
+                         ::testing::Values("star_vertex.poly", "schoenhardt.poly", "wedge_5deg.poly",
+                                           "cube_cavity.poly", "plate_holes.poly", "box_with_hole.stl"));
+
+// Issue 5 item 6: the tuning fork (a square cavity opened to the outside by a
+// neck of width w; mv3d/octree_geodesic_test.cpp) has no feature of size w
+// inside P, so its tetrahedron count may change by at most 1.5x between
+// w = 1e-1 and w = 1e-3. Widths are multiples of 2^-12 (dyadic coordinates).
+Plc3 tuning_fork(double w) {
+  w = std::round(w * 4096) / 4096;
+  const double a = 0.5 - w / 2, b = 0.5 + w / 2;
+  return mv3d::octest::extrude({{0, 0},
+                                {1, 0},
+                                {1, 1},
+                                {b, 1},
+                                {b, 0.75},
+                                {0.75, 0.75},
+                                {0.75, 0.25},
+                                {0.25, 0.25},
+                                {0.25, 0.75},
+                                {a, 0.75},
+                                {a, 1},
+                                {0, 1}},
+                               0.25);
+}
+
+// DISABLED, and failing: at w = 1e-3 the far side of the neck passes through
+// the united 2x2x2 box of a mouth vertex (leaf 1043 inside the united box of
+// vertex 4), a second component box_jobs cannot mesh yet (ALGORITHM.md §12.4
+// "Duplicates"), so tet_mesh stops with MeshNotSupported. w = 1e-1 meshes
+// (400,766 tets). Enable when united boxes are split per component.
+TEST(GenericGeodesic, DISABLED_TuningForkCountIndependentOfTheNeckWidth) {
+  const TetMeshResult wide = mesh_and_check("tuning fork 1e-1", make_domain(tuning_fork(1e-1)));
+  const TetMeshResult narrow = mesh_and_check("tuning fork 1e-3", make_domain(tuning_fork(1e-3)));
+  const double ratio =
+      static_cast<double>(narrow.mesh.tetrahedra.size()) / static_cast<double>(wide.mesh.tetrahedra.size());
+  std::printf("tuning fork: %zu tets at w = 1e-1, %zu at w = 1e-3, ratio %.3f\n", wide.mesh.tetrahedra.size(),
+              narrow.mesh.tetrahedra.size(), ratio);
+  EXPECT_LE(ratio, 1.5);
+  EXPECT_GE(ratio, 1 / 1.5);
+}
+
+}  // namespace
+}  // namespace pqmesh
