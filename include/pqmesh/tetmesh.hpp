@@ -56,7 +56,7 @@ struct TetMeshOptions {
   // Shift the octree grid off every input coordinate (ALGORITHM.md §10
   // "Generic grid"); false: the aligned grid. CLI --aligned-grid sets false.
   bool generic_grid = true;
-  // The second warping pass of §4.3 for facet boxes (tet3d/warp.hpp).
+  // Warping of §4.3, both passes, for every box kind (tet3d/warp.hpp).
   bool warp = true;
   // Called at phase boundaries (may be empty).
   std::function<void(const TetMeshProgress&)> progress;

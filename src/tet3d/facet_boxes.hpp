@@ -1,8 +1,8 @@
 #pragma once
 // Tetrahedra of empty boxes (§4.5.1), facet boxes (§4.5.4), edge boxes
-// (§4.5.3), vertex boxes (§4.5.2) and two-facet boxes (§4.5.5), before
-// the first warping pass (§4.3; a box corner may lie on F; it is then its own
-// crossing point, cut_square.hpp). Every box face square goes through the
+// (§4.5.3), vertex boxes (§4.5.2) and two-facet boxes (§4.5.5), optionally
+// with warped box vertices (§4.3, warp.hpp; a box corner exactly on F is
+// never moved and is then its own crossing point, cut_square.hpp). Every box face square goes through the
 // square dispatcher (square_cases.hpp), so all kinds share one triangulation
 // of every square.
 //
@@ -75,9 +75,8 @@ struct FacetBoxStats {
 };
 
 struct BoxMeshOptions {
-  // §4.3 second pass for the facet boxes (warp.hpp), only for facet boxes
-  // none of whose face points is on the faces of an edge, vertex or
-  // two-facet box (those are never moved: their warping rules are not done).
+  // §4.3 warping (both passes) for the box vertices of every kind (warp.hpp;
+  // rules and counts there).
   bool warp = false;
 };
 
@@ -85,8 +84,18 @@ struct BoxMesh {
   TetMesh3 mesh;                        // region attribute 0; no boundary face list
   std::vector<VertexKey> keys;          // per vertex
   std::vector<std::int32_t> tet_leaf;   // per tetrahedron
+  std::vector<std::int32_t> tet_job;    // per tetrahedron: index into the jobs
   FacetBoxStats stats;
-  std::int64_t warped = 0, warp_conflicts = 0;
+  // Second warping pass (warp.hpp): vertices moved (of which onto an acute
+  // wedge's bisector), and left in place: side conflict, reflex edge
+  // (Fig. 4.7 copies not done), crowded, would invert a tetrahedron (frozen,
+  // facet_boxes.cpp); not moved: exactly on a facet plane.
+  std::int64_t warped = 0, warp_conflicts = 0, warp_bisected = 0, warp_fallback = 0, warp_reflex_left = 0, warp_crowded_left = 0,
+               warp_on_plane = 0, warp_inverting_left = 0;
+  // First pass (box edges near P edges): vertices moved by it (among
+  // `warped`), and first-pass moves not made (box edge parallel to E).
+  std::int64_t warp_first_pass = 0, warp_parallel_left = 0;
+  std::int64_t warp_rebuilds = 0;  // warp tables rebuilt after freezing points of inverted tetrahedra
 };
 
 // The squares of the job's box faces (face order (axis 0..2) x (lower,

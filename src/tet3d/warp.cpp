@@ -4,14 +4,74 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "tet3d/cut_square_edge.hpp"
 #include "tet3d/facet_plane.hpp"
 
 namespace pqmesh::tet3d {
 
-WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                              std::span<const FacetLeaf> boxes) {
+namespace {
+
+// Distance from p to triangle abc (closest point by the Voronoi regions of
+// the triangle's features; a construction, used only for thresholds).
+double triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return norm(p - a);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return norm(p - b);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return norm(p - (a + (d1 / (d1 - d3)) * ab));
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return norm(p - c);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return norm(p - (a + (d2 / (d2 - d6)) * ac));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return norm(p - (b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)));
+  const double den = 1 / (va + vb + vc);
+  return norm(p - (a + (vb * den) * ab + (vc * den) * ac));
+}
+
+// Closest points of segments [p, q] and [a, b] (a construction, for the
+// h/8 threshold and the direction of the first pass).
+std::pair<Vec3, Vec3> closest_points(Vec3 p, Vec3 q, Vec3 a, Vec3 b) {
+  const Vec3 d1 = q - p, d2 = b - a, r = p - a;
+  const double A = dot(d1, d1), E = dot(d2, d2), F = dot(d2, r), C = dot(d1, r), B = dot(d1, d2);
+  const double den = A * E - B * B;
+  double s = den > 0 ? std::clamp((B * F - C * E) / den, 0.0, 1.0) : 0.0;
+  double t = (B * s + F) / E;
+  if (t < 0) {
+    t = 0;
+    s = std::clamp(-C / A, 0.0, 1.0);
+  } else if (t > 1) {
+    t = 1;
+    s = std::clamp((B - C) / A, 0.0, 1.0);
+  }
+  return {p + s * d1, a + t * d2};
+}
+
+}  // namespace
+
+double facet_distance(const Domain3& domain, int facet, Vec3 x) {
+  double best = INFINITY;
+  const auto& pv = domain.plc.vertices;
+  for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
+    if (domain.facet_triangle_owner[t] != facet) continue;
+    const auto& tri = domain.facet_triangles[t];
+    best = std::min(best, triangle_distance(x, pv[static_cast<std::size_t>(tri[0])], pv[static_cast<std::size_t>(tri[1])],
+                                            pv[static_cast<std::size_t>(tri[2])]));
+  }
+  return best;
+}
+
+WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                            std::span<const WarpCandidate> candidates,
+                            const std::unordered_set<GridPoint, GridPointHash>* frozen) {
   WarpTable table;
   std::map<int, std::unique_ptr<FacetPlane>> planes;
   auto plane_of = [&](int f) -> const FacetPlane& {
@@ -19,10 +79,194 @@ WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, con
     if (it == planes.end()) it = planes.emplace(f, std::make_unique<FacetPlane>(domain, f)).first;
     return *it->second;
   };
-  // Every box vertex on the faces of a facet box, with the facets of the
-  // facet boxes it belongs to (in job order, without repeats).
-  std::vector<GridPoint> order;
-  std::unordered_map<GridPoint, std::vector<int>, GridPointHash> facets_at;
+  std::map<int, std::unique_ptr<EdgeCone>> cones;
+  auto cone_of = [&](int e) -> const EdgeCone& {
+    auto it = cones.find(e);
+    if (it == cones.end()) it = cones.emplace(e, std::make_unique<EdgeCone>(domain, e)).first;
+    return *it->second;
+  };
+  std::map<std::pair<int, int>, std::vector<int>> pair_edges;
+  for (std::size_t e = 0; e < domain.edges.size(); ++e) {
+    const auto& f = domain.edges[e].facets;
+    pair_edges[{std::min(f[0], f[1]), std::max(f[0], f[1])}].push_back(static_cast<int>(e));
+  }
+  auto edges_between = [&](const std::vector<int>& facets) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < facets.size(); ++i)
+      for (std::size_t j = i + 1; j < facets.size(); ++j) {
+        const auto it = pair_edges.find({std::min(facets[i], facets[j]), std::max(facets[i], facets[j])});
+        if (it != pair_edges.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+      }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  };
+  const auto& pv = domain.plc.vertices;
+  for (const WarpCandidate& c : candidates) {
+    if (c.facets.empty()) continue;
+    const Vec3 x0 = grid_coordinates(tree, c.p);
+    const std::int32_t level = std::max(c.level, corners.finest_level(c.p));
+    if (level < 0) continue;
+    const double h = std::ldexp(tree.side(0), -level);
+    bool on_some = false;
+    for (const int f : c.facets) on_some = on_some || plane_of(f).side(x0) == Sign::Zero;
+    // Exactly on a facet plane: an exact boundary point already, not moved.
+    if (on_some) {
+      ++table.on_plane;
+      continue;
+    }
+    const std::vector<int> edges = edges_between(c.facets);
+    // First pass: every ring segment [v, w] from v (a piece of a box edge)
+    // closer than h/8 to a P edge E of the boxes using v moves by h/8
+    // orthogonally to both, away from E; moves of distinct (axis, E) pairs
+    // add up (a box corner near E on two or three box edges). The direction
+    // is taken from the segment's pair of closest points, computed from the
+    // sorted end points, so both ends of a segment move alike.
+    Vec3 x = x0;
+    std::vector<std::pair<int, int>> seen;  // (axis, edge)
+    for (const int e : edges) {
+      const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
+      const Vec3 ea = pv[static_cast<std::size_t>(de.a)], eb = pv[static_cast<std::size_t>(de.b)];
+      for (const GridPoint& w : c.neighbours) {
+        int axis = 0;
+        while (axis < 2 && w.f[static_cast<std::size_t>(axis)] == c.p.f[static_cast<std::size_t>(axis)]) ++axis;
+        if (std::find(seen.begin(), seen.end(), std::pair{axis, e}) != seen.end()) continue;
+        const GridPoint& lo = std::min(c.p, w);
+        const GridPoint& hi = std::max(c.p, w);
+        const auto [ps, pe] = closest_points(grid_coordinates(tree, lo), grid_coordinates(tree, hi), ea, eb);
+        if (!(norm(ps - pe) < h / 8)) continue;
+        Vec3 ax;
+        (axis == 0 ? ax.x : axis == 1 ? ax.y : ax.z) = 1;
+        Vec3 d = cross(eb - ea, ax);
+        const double len = norm(d);
+        if (!(len > 1e-9 * norm(eb - ea))) {
+          ++table.parallel_left;  // E parallel to the box edge: not done
+          continue;
+        }
+        d = (1 / len) * d;
+        if (dot(d, ps - pe) < 0) d = -1.0 * d;
+        x = x + (h / 8) * d;
+        seen.push_back({axis, e});
+      }
+    }
+    const bool first = !seen.empty();
+    // Second pass from `from`; sets the facet of the key, whether the
+    // bisector rule was used, and the reason a close vertex stays (0: none,
+    // 1: crowded, 2: reflex).
+    auto second_pass = [&](Vec3 from, int& facet, bool& bisect, int& left) {
+      facet = -1;
+      bisect = false;
+      left = 0;
+      std::vector<int> close;
+      for (const int f : c.facets)
+        if (std::fabs(plane_of(f).distance(from)) <= h / 16 && facet_distance(domain, f, from) <= h / 16)
+          close.push_back(f);
+      if (close.empty()) return from;
+      facet = close[0];
+      if (close.size() == 1) {
+        const FacetPlane& plane = plane_of(close[0]);
+        return from + ((plane.side(from) == Sign::Positive ? 1.0 : -1.0) * h / 16) * plane.normal();
+      }
+      int edge = -1;
+      if (close.size() == 2) {
+        const auto it = pair_edges.find({std::min(close[0], close[1]), std::max(close[0], close[1])});
+        if (it != pair_edges.end() && it->second.size() == 1) edge = it->second[0];
+      }
+      const EdgeCone* ec = edge < 0 ? nullptr : &cone_of(edge);
+      const Sign sf = ec ? ec->f().side(from) : Sign::Zero, sg = ec ? ec->g().side(from) : Sign::Zero;
+      if (ec == nullptr || sf == Sign::Zero || sg == Sign::Zero) {
+        left = 1;
+        return from;
+      }
+      if (ec->convex() && sf == Sign::Negative && sg == Sign::Negative) {
+        // Acute interior wedge: orthogonal projection onto its bisector plane.
+        const Vec3 m = ec->f().normal() - ec->g().normal();
+        bisect = true;
+        return from - (dot(m, from - ec->a()) / dot(m, m)) * m;
+      }
+      if (!ec->convex() && sf == Sign::Positive && sg == Sign::Positive) {
+        // In the thin exterior slot of a reflex edge: Fig. 4.7's copies per
+        // facet are not done.
+        left = 2;
+        return from;
+      }
+      // Elsewhere near E (outside a convex edge, or on one side of each
+      // plane): h/16 along the sum of the normals oriented to v's sides,
+      // which increases v's distance from both planes (a gap the thesis
+      // leaves to the first pass; docs/ALGORITHM.md §12.5).
+      const Vec3 d = (sf == Sign::Positive ? 1.0 : -1.0) * ec->f().normal() +
+                     (sg == Sign::Positive ? 1.0 : -1.0) * ec->g().normal();
+      const double len = norm(d);
+      if (!(len > 0.25)) {
+        left = 1;
+        return from;
+      }
+      return from + (h / 16 / len) * d;
+    };
+    // A move is accepted when it changes no decision made on the prewarped
+    // points: v's side of every facet of every box using v, and, for the
+    // ring segments from v crossed by F or G of a P edge E between two of
+    // v's facets, the side of E's line they pass (orient3d(a, b, v, w)
+    // decides the crossing's dP membership and order, cut_square_edge.hpp),
+    // against w's current (possibly moved) position. Sides of the planes
+    // are kept, so the same segments are crossed before and after.
+    auto accept = [&](Vec3 y) {
+      for (const int f : c.facets)
+        if (plane_of(f).side(y) != plane_of(f).side(x0)) return false;
+      for (const int e : edges) {
+        const EdgeCone& ec = cone_of(e);
+        for (const GridPoint& w : c.neighbours) {
+          const Vec3 w0 = grid_coordinates(tree, w);
+          const Warp* ww = table.find(w);
+          const Vec3 w1 = ww != nullptr ? ww->at : w0;
+          const bool crossed = ec.f().side(x0) * ec.f().side(w0) == Sign::Negative ||
+                               ec.g().side(x0) * ec.g().side(w0) == Sign::Negative;
+          if (crossed && orient3d(ec.a(), ec.b(), x0, w0) != orient3d(ec.a(), ec.b(), y, w1)) return false;
+        }
+      }
+      return true;
+    };
+    int facet = -1, left = 0;
+    bool bisect = false;
+    const Vec3 y = second_pass(x, facet, bisect, left);
+    table.crowded_left += left == 1;
+    table.reflex_left += left == 2;
+    auto same = [](Vec3 p, Vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; };
+    if (same(y, x0)) continue;
+    // Fallbacks when the full move is refused: the first pass alone, then
+    // the second pass alone from the prewarped point.
+    Vec3 chosen = y;
+    bool ok = accept(y);
+    if (!ok && first) {
+      ok = accept(x);
+      chosen = x;
+      bisect = false;
+      if (!ok) {
+        int l2 = 0;
+        chosen = second_pass(x0, facet, bisect, l2);
+        ok = !same(chosen, x0) && accept(chosen);
+      }
+      table.fallback += ok ? 1 : 0;
+    }
+    if (!ok) {
+      ++table.conflicts;
+      continue;
+    }
+    if (frozen != nullptr && frozen->count(c.p) != 0) {
+      ++table.frozen_left;
+      continue;
+    }
+    table.insert(c.p, Warp{facet, chosen});
+    table.bisected += bisect ? 1 : 0;
+    table.first_pass += first && (same(chosen, y) || same(chosen, x)) ? 1 : 0;
+  }
+  return table;
+}
+
+WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                              std::span<const FacetLeaf> boxes) {
+  std::vector<WarpCandidate> candidates;
+  std::unordered_map<GridPoint, std::size_t, GridPointHash> index;
   std::vector<FaceSquare> squares;
   for (const FacetLeaf& fb : boxes) {
     squares.clear();
@@ -30,44 +274,13 @@ WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, con
       for (const bool upper : {false, true}) face_squares(tree.key(fb.leaf), axis, upper, corners, squares);
     for (const FaceSquare& s : squares)
       for (const GridPoint& p : square_ring(s, corners)) {
-        auto [it, fresh] = facets_at.try_emplace(p);
-        if (fresh) order.push_back(p);
-        if (std::find(it->second.begin(), it->second.end(), fb.facet) == it->second.end()) it->second.push_back(fb.facet);
+        const auto [it, fresh] = index.try_emplace(p, candidates.size());
+        if (fresh) candidates.push_back({p, {}, {}});
+        std::vector<int>& fs = candidates[it->second].facets;
+        if (std::find(fs.begin(), fs.end(), fb.facet) == fs.end()) fs.push_back(fb.facet);
       }
   }
-  for (const GridPoint& p : order) {
-    const std::vector<int>& fs = facets_at[p];
-    const Vec3 x = grid_coordinates(tree, p);
-    const double h = std::ldexp(tree.side(0), -corners.finest_level(p));
-    int close = -1, close_count = 0;
-    bool on_some = false;
-    for (const int f : fs) {
-      const FacetPlane& plane = plane_of(f);
-      if (plane.side(x) == Sign::Zero) on_some = true;
-      if (std::fabs(plane.distance(x)) <= h / 16) {
-        ++close_count;
-        if (close < 0) close = f;
-      }
-    }
-    // Exactly on a facet: an exact boundary point already, not moved.
-    if (close < 0 || on_some) continue;
-    const FacetPlane& plane = plane_of(close);
-    const double move = (plane.side(x) == Sign::Positive ? 1.0 : -1.0) * h / 16;
-    const Vec3 y = x + move * plane.normal();
-    // The move must not change the vertex's side of any facet of a facet box
-    // using it (else the box faces it shares with other boxes would be
-    // classified differently from the two sides). Near two facets (the
-    // thesis's special cases of Fig. 4.7 and the acute-edge bisector, which
-    // belong to edge boxes) the vertex is left in place.
-    bool keeps_sides = close_count == 1;
-    for (const int f : fs) keeps_sides = keeps_sides && plane_of(f).side(y) == plane_of(f).side(x);
-    if (!keeps_sides) {
-      ++table.conflicts;
-      continue;
-    }
-    table.insert(p, Warp{close, y});
-  }
-  return table;
+  return warp_box_vertices(tree, corners, domain, candidates);
 }
 
 int grid_vertex(const GridPoint& p, const OctTree& tree, const WarpTable* warps, PointBook& book) {

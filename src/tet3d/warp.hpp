@@ -1,22 +1,50 @@
 #pragma once
-// Thesis §4.3, second warping pass, for facet boxes: a box vertex v within
-// h/16 of the P facet F of a facet box containing it (h: the smallest box
-// having v as a vertex, CornerSet::finest_level) is moved by h/16 along F's
-// normal, away from F (to the side it is on, decided by exact orient3d).
-// Vertices exactly on F's plane are not moved: they are exact boundary points
-// already (aligned facets), and the crossings next to them coincide with them.
-// The first pass (box edges near P edges) belongs to edge boxes and is not done.
+// Thesis §4.3, both warping passes, for the box vertices of every box kind
+// (empty, facet, edge, vertex, two-facet), as one table: grid point -> moved
+// coordinates, computed before any box is meshed (docs/ALGORITHM.md §12.5).
+// h of a vertex: the smallest box containing it (CornerSet::finest_level, or
+// the deepest job box whose faces use it, WarpCandidate::level). Distances
+// and directions are constructions (floating-point thresholds, as 2D §8.5:
+// either outcome is valid, only quality moves); every decision that shapes
+// the mesh stays exact.
 //
-// Consistency: the table is complete before any box is meshed, and every box
-// resolves its grid points through it, so all boxes sharing v see one moved
-// copy, keyed (Warped, v, F). A vertex is left in place and counted as a
-// conflict when it is within h/16 of two facets (the thesis's reflex/acute
-// special cases, Fig. 4.7, which belong to edge boxes), or when the move would
-// change its side of another facet whose facet box uses it: a box face's
-// classification (cut_square.hpp) must not depend on which side asks.
+// First pass: a ring segment [v, w] (a piece of a box edge: our box edges are
+// chains of split points) closer than h/8 to a P edge E between two facets of
+// the boxes using v moves h/8 orthogonally to E and to the segment, away from
+// E; moves of distinct (axis, E) pairs add up. E parallel to the box edge (the
+// thesis: move within F) is not done and counted (`parallel_left`).
+// Second pass, from the first pass's position:
+//   * v exactly on the plane of a facet of a box using it (orient3d = 0, on
+//     the prewarped point) is not moved at all (an exact boundary point);
+//   * one close facet (distance to the facet itself <= h/16): h/16 along its
+//     normal, away from it;
+//   * two close facets F, G of one P edge E, convex (acute interior wedge),
+//     v strictly on P's side of both: orthogonal projection onto the plane
+//     bisecting the wedge ((n_F - n_G)·(x - a) = 0, a on E);
+//   * both close, v in the exterior slot of a reflex edge (Fig. 4.7: one copy
+//     per facet; not done): left, counted (`reflex_left`);
+//   * both close elsewhere near E: h/16 along the sum of the two normals
+//     oriented to v's sides (gap filled); close to two facets without a
+//     common edge or to three: left, counted (`crowded_left`).
+// Acceptance: a move must change no decision made on the PREWARPED points:
+// v's side of every facet of every box using v (a square's status and cut
+// come from its ring's sides; which faces meet a square is decided on the
+// prewarped square, square_meets.hpp, untouched), and for every ring segment
+// [v, w] crossed by F or G of a P edge E of those boxes the side of E's line
+// it passes (orient3d(a, b, v, w), Cases B/D, cut_square_edge.hpp), against
+// w's current position. A refused full move falls back to the first pass
+// alone, then to the second pass alone from the prewarped point
+// (`fallback`); else v stays (`conflicts`). The caller may freeze points
+// whose move inverted a tetrahedron (`frozen`, facet_boxes.cpp).
+//
+// Consistency: every box resolves its grid points through the table
+// (grid_vertex), so all boxes sharing v see one moved copy, keyed
+// (Warped, v, F) (F = the first close facet, or -1).
 #include <cstdint>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
+#include <vector>
 
 #include "pqmesh/domain.hpp"
 #include "tet3d/box_faces.hpp"
@@ -37,19 +65,47 @@ class WarpTable {
   }
   bool insert(const GridPoint& p, const Warp& w) { return map_.try_emplace(p, w).second; }
   std::size_t size() const { return map_.size(); }
-  std::int64_t conflicts = 0;
+  std::int64_t conflicts = 0;     // left: the move would change a side decision
+  std::int64_t bisected = 0;      // moved onto the bisector of an acute wedge (among size())
+  std::int64_t reflex_left = 0;   // left: close to both facets of a reflex edge (Fig. 4.7 copies not done)
+  std::int64_t crowded_left = 0;  // left: close to two facets outside P / without a common edge / to three
+  std::int64_t on_plane = 0;      // not moved: exactly on a facet plane
+  std::int64_t first_pass = 0;     // moved with a first-pass part (among size())
+  std::int64_t fallback = 0;       // moved by a fallback (first pass only / second only; among size())
+  std::int64_t parallel_left = 0;  // first-pass moves not made: box edge parallel to E
+  std::int64_t frozen_left = 0;   // left: in the caller's frozen set (their move inverted a tetrahedron)
 
  private:
   std::unordered_map<GridPoint, Warp, GridPointHash> map_;
 };
 
-// (leaf, facet) pairs of facet boxes.
+// A box vertex, the facets of the boxes using it and its neighbours along
+// the rings of the squares using it (no repeats).
+struct WarpCandidate {
+  GridPoint p;
+  std::vector<int> facets;
+  std::vector<GridPoint> neighbours;
+  // The deepest level of a box whose faces use p (a vertex job's united box
+  // counts one level up); with CornerSet::finest_level it gives §4.3's h,
+  // the smallest box containing p (a united box's ring point need not be a
+  // leaf corner).
+  std::int32_t level = -1;
+};
+// `frozen` (may be null): points never moved (counted in frozen_left when they would be).
+WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                            std::span<const WarpCandidate> candidates,
+                            const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr);
+
+// (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {
   std::int32_t leaf = -1;
   int facet = -1;
 };
 WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                               std::span<const FacetLeaf> boxes);
+
+// Euclidean distance from x to facet f (its facet triangles; a construction).
+double facet_distance(const Domain3& domain, int facet, Vec3 x);
 
 // The mesh vertex of grid point p: its warped copy if the table has one.
 int grid_vertex(const GridPoint& p, const OctTree& tree, const WarpTable* warps, PointBook& book);

@@ -195,8 +195,36 @@ Plc3 random_notch_prism(std::mt19937_64& rng) {
   return plc;
 }
 
+// Worst shapes per box kind (empty, facet, edge, vertex, two-facet).
+constexpr int kKinds = 5;
+const char* const kKindNames[kKinds] = {"empty", "facet", "edge", "vertex", "two-facet"};
+int kind_index(const BoxJob& j) {
+  switch (j.kind) {
+    case BoxKind::FromFacet: return j.facet < 0 ? 0 : 1;
+    case BoxKind::Empty: return 0;
+    case BoxKind::Facet: return 1;
+    case BoxKind::Edge: return 2;
+    case BoxKind::Vertex: return 3;
+    case BoxKind::TwoFacet: return 4;
+  }
+  return 0;
+}
+
+struct KindShapes {
+  std::array<double, kKinds> aspect{}, dihedral{180, 180, 180, 180, 180};
+  std::array<std::int64_t, kKinds> tets{};
+  // Lemma 6: min over distinct I-vertices x, y of one tetrahedron (box
+  // vertices, P facet x box edge, P edge x box face) of |xy| / h, h the
+  // prewarped side of the box the tetrahedron belongs to (the united box for
+  // a vertex job).
+  std::array<double, kKinds> lemma6{INFINITY, INFINITY, INFINITY, INFINITY, INFINITY};
+};
+
 struct Totals {
   int meshed = 0, skipped = 0;
+  bool warp = false;
+  KindShapes kinds;
+  std::int64_t warped = 0, bisected = 0, fallback = 0, conflicts = 0, reflex_left = 0, crowded_left = 0, on_plane = 0, inverting_left = 0, first_pass = 0, parallel_left = 0, rebuilds = 0, max_rebuilds = 0;
   std::int64_t squares_compared = 0, duplicates = 0;
   std::map<std::string, std::int64_t> pairs;
   std::int64_t tets = 0;
@@ -205,6 +233,39 @@ struct Totals {
 };
 
 // Meshes every leaf of d's octree; returns false (skipped) when a leaf has no job.
+// Shapes per kind and the Lemma 6 ratios of mesh m.
+void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctTree& tree, const CornerSet& corners,
+                   KindShapes& k) {
+  ASSERT_EQ(m.tet_job.size(), m.mesh.tetrahedra.size());
+  auto is_i_vertex = [&](int v) {
+    const VertexKey& key = m.keys[static_cast<std::size_t>(v)];
+    switch (key.kind) {
+      case VertexKind::Grid: return corners.finest_level(key.p) >= 0;  // a box vertex (not a square or box centre)
+      case VertexKind::Warped:
+      case VertexKind::FacetCrossing:
+      case VertexKind::EdgeCrossing: return true;
+      default: return false;
+    }
+  };
+  for (std::size_t t = 0; t < m.mesh.tetrahedra.size(); ++t) {
+    const BoxJob& j = jobs[static_cast<std::size_t>(m.tet_job[t])];
+    const int ki = kind_index(j);
+    const auto& tet = m.mesh.tetrahedra[t];
+    const auto p = [&](int i) { return m.mesh.vertices[static_cast<std::size_t>(tet[static_cast<std::size_t>(i)])]; };
+    const TetQuality q = tetrahedron_quality(p(0), p(1), p(2), p(3));
+    k.aspect[static_cast<std::size_t>(ki)] = std::max(k.aspect[static_cast<std::size_t>(ki)], q.aspect_ratio);
+    k.dihedral[static_cast<std::size_t>(ki)] = std::min(k.dihedral[static_cast<std::size_t>(ki)], q.min_dihedral_deg);
+    ++k.tets[static_cast<std::size_t>(ki)];
+    const double h = tree.side(j.leaf) * (j.kind == BoxKind::Vertex ? 2 : 1);
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        if (!is_i_vertex(tet[static_cast<std::size_t>(a)]) || !is_i_vertex(tet[static_cast<std::size_t>(b)])) continue;
+        const double r = norm(p(a) - p(b)) / h;
+        k.lemma6[static_cast<std::size_t>(ki)] = std::min(k.lemma6[static_cast<std::size_t>(ki)], r);
+      }
+  }
+}
+
 bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool separate = false) {
   mv3d::OctreeOptions opt;
   opt.separate = separate;
@@ -219,8 +280,10 @@ bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool 
   }
   const CornerSet corners(b);
   BoxMesh m;
+  BoxMeshOptions mo;
+  mo.warp = tot.warp;
   try {
-    m = mesh_boxes(b.tree(), corners, d, jobs.jobs);
+    m = mesh_boxes(b.tree(), corners, d, jobs.jobs, mo);
   } catch (const InternalError& e) {
     // The dispatcher's refusal of a square crowded beyond the thesis's cases
     // (possible without the separating splits) is a skip; any other
@@ -232,7 +295,7 @@ bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool 
   }
   tot.squares_compared += squares_agree(b, corners, d, jobs.jobs, tot.pairs);
   if (tot.meshed == 0) {  // determinism: the same arrays from a second run
-    const BoxMesh again = mesh_boxes(b.tree(), corners, d, jobs.jobs);
+    const BoxMesh again = mesh_boxes(b.tree(), corners, d, jobs.jobs, mo);
     EXPECT_EQ(m.mesh.tetrahedra, again.mesh.tetrahedra);
     EXPECT_EQ(m.keys, again.keys);
     bool same = m.mesh.vertices.size() == again.mesh.vertices.size();
@@ -245,6 +308,19 @@ bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool 
   const CheckReport r = check_mesh(m.mesh, d);
   EXPECT_TRUE(r.valid()) << what << " " << seed << ": " << r.to_text();
   const QualityReport q = quality_report(m.mesh);
+  measure_kinds(m, jobs.jobs, b.tree(), corners, tot.kinds);
+  tot.warped += m.warped;
+  tot.bisected += m.warp_bisected;
+  tot.fallback += m.warp_fallback;
+  tot.conflicts += m.warp_conflicts;
+  tot.reflex_left += m.warp_reflex_left;
+  tot.crowded_left += m.warp_crowded_left;
+  tot.on_plane += m.warp_on_plane;
+  tot.inverting_left += m.warp_inverting_left;
+  tot.first_pass += m.warp_first_pass;
+  tot.rebuilds += m.warp_rebuilds;
+  tot.max_rebuilds = std::max(tot.max_rebuilds, m.warp_rebuilds);
+  tot.parallel_left += m.warp_parallel_left;
   ++tot.meshed;
   tot.tets += static_cast<std::int64_t>(m.mesh.tetrahedra.size());
   const FacetBoxStats& s = m.stats;
@@ -269,6 +345,21 @@ bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool 
 }
 
 void print(const char* what, const Totals& t) {
+  std::printf("%s, %s:", what, t.warp ? "WARPED" : "unwarped");
+  for (int k = 0; k < kKinds; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    if (t.kinds.tets[i] > 0)
+      std::printf(" %s aspect %.1f dihedral %.2f lemma6 %.4f;", kKindNames[k], t.kinds.aspect[i], t.kinds.dihedral[i],
+                  t.kinds.lemma6[i]);
+  }
+  std::printf("\n  warping: moved %lld (first pass %lld, parallel left %lld; bisector %lld, fallback %lld), left: side conflict %lld, reflex %lld, crowded %lld, inverting %lld (tables rebuilt %lld, at most %lld per mesh); on a plane %lld\n",
+              static_cast<long long>(t.warped), static_cast<long long>(t.first_pass),
+              static_cast<long long>(t.parallel_left), static_cast<long long>(t.bisected), static_cast<long long>(t.fallback),
+              static_cast<long long>(t.conflicts),
+              static_cast<long long>(t.reflex_left), static_cast<long long>(t.crowded_left),
+              static_cast<long long>(t.inverting_left), static_cast<long long>(t.rebuilds),
+              static_cast<long long>(t.max_rebuilds),
+              static_cast<long long>(t.on_plane));
   std::printf(
       "%s: %d meshed, %d skipped; %lld tets; boxes: empty %lld, facet %lld (inside %lld / on F %lld / beyond %lld), "
       "edge %lld, vertex %lld, two-facet %lld; squares: nothing %lld, A %lld, C %lld, B/D %lld; worst aspect %.1f, "
@@ -291,38 +382,67 @@ void print(const char* what, const Totals& t) {
               static_cast<long long>(t.s.vertex_squares_located));
 }
 
-TEST(AllBoxes, RandomTetrahedra) {
+// Every test runs unwarped and warped (§4.3 second pass, warp.hpp).
+class AllBoxes : public ::testing::TestWithParam<bool> {};
+
+// Measured floors with warping on (§4.3 both passes, warp.hpp; they fail
+// unwarped). Lemma 6 asks |xy| >= min(t, h/16) for distinct I-vertices; over
+// these runs the smallest |xy| / h in one tetrahedron is 0.0019 warped (all
+// kinds; facet boxes of the random stars), against 0.0001 unwarped (edge
+// boxes). Worst aspect ratios warped / unwarped: facet 663 / 3,250, vertex
+// 173 / 2,944, two-facet 375 / 3,529. Edge boxes get no aspect floor: an edge
+// E passing within an ulp..h/8 of a box edge leaves E ∩ b (prewarped) tiny,
+// and its apex nearly on the Case B crossing (ALGORITHM.md §12.5).
+void expect_warp_floors(const Totals& t) {
+  if (!t.warp) return;
+  EXPECT_GT(t.warped, 0);
+  for (int k = 0; k < kKinds; ++k) {
+    if (t.kinds.tets[static_cast<std::size_t>(k)] == 0) continue;
+    EXPECT_GE(t.kinds.lemma6[static_cast<std::size_t>(k)], 0.0015) << "Lemma 6 ratio of " << kKindNames[k] << " boxes";
+  }
+  EXPECT_LE(t.kinds.aspect[1], 1000.0) << "worst facet-box aspect ratio";
+  EXPECT_LE(t.kinds.aspect[3], 500.0) << "worst vertex-box aspect ratio";
+  EXPECT_LE(t.kinds.aspect[4], 800.0) << "worst two-facet-box aspect ratio";
+}
+
+TEST_P(AllBoxes, RandomTetrahedra) {
   std::mt19937_64 rng(20261130);
   Totals t;
+  t.warp = GetParam();
   for (int seed = 0; seed < 8; ++seed) {
     const Domain3 d = make_domain(random_tetrahedron(rng));
     mesh_whole(d, "tetrahedron", seed, t);
   }
   print("random tetrahedra", t);
+  expect_warp_floors(t);
   EXPECT_GE(t.meshed, 6);
   EXPECT_GT(t.s.edge, 0);
   EXPECT_GT(t.s.vertex, 0);
 }
 
-TEST(AllBoxes, RandomStarPolyhedra) {
+TEST_P(AllBoxes, RandomStarPolyhedra) {
   std::mt19937_64 rng(77);
   Totals t;
+  t.warp = GetParam();
   for (int seed = 0; seed < 2; ++seed) {
     const Domain3 d = make_domain(random_star(rng));
     mesh_whole(d, "star", seed, t);
   }
   print("random star polyhedra", t);
+  expect_warp_floors(t);
   EXPECT_GE(t.meshed, 1);
 }
 
-TEST(AllBoxes, RandomLPrisms) {
+TEST_P(AllBoxes, RandomLPrisms) {
   std::mt19937_64 rng(5);
   Totals t;
+  t.warp = GetParam();
   for (int seed = 0; seed < 3; ++seed) {
     const Domain3 d = make_domain(random_l_prism(rng));
     mesh_whole(d, "L-prism", seed, t);
   }
   print("random L-prisms", t);
+  expect_warp_floors(t);
   EXPECT_GE(t.meshed, 2);
   EXPECT_GT(t.duplicates, 0);  // duplicated cubes occur (each component meshed on its own)
   EXPECT_GT(t.s.two_facet, 0);
@@ -333,26 +453,30 @@ TEST(AllBoxes, RandomLPrisms) {
 // component's side only; testing facets by their triangles gave that square
 // to both components (overlapping tetrahedra, hanging vertices). Facets of
 // edge boxes are now tested by their half-plane from the edge.
-TEST(AllBoxes, NotchPrismDuplicatesShareAFacet) {
+TEST_P(AllBoxes, NotchPrismDuplicatesShareAFacet) {
   std::mt19937_64 rng(20261130);
   Plc3 plc;
   for (int seed = 0; seed < 5; ++seed) plc = random_notch_prism(rng);
   Totals t;
+  t.warp = GetParam();
   EXPECT_TRUE(mesh_whole(make_domain(plc), "notch prism", 4, t));
   print("notch prism 4", t);
+  expect_warp_floors(t);
   EXPECT_GT(t.duplicates, 0);
 }
 
 // With the separating splits of §4.1.7 steps 6 and 9 every leaf is of a
 // thesis kind (no "other" leaf), so every tetrahedron must be meshed; one
 // tetrahedron only (about 50k tets, for test time).
-TEST(AllBoxes, SeparatedOctreeTetrahedron) {
+TEST_P(AllBoxes, SeparatedOctreeTetrahedron) {
   std::mt19937_64 rng(20261130);
   Plc3 plc;
   for (int seed = 0; seed < 3; ++seed) plc = random_tetrahedron(rng);
   Totals t;
+  t.warp = GetParam();
   EXPECT_TRUE(mesh_whole(make_domain(plc), "separated tetrahedron", 2, t, true));
   print("separated octree, tetrahedron 2", t);
+  expect_warp_floors(t);
 }
 
 // The corpus models have dyadic coordinates: P edges and vertices lie on box
@@ -376,6 +500,9 @@ TEST_P(AlignedCorpus, MeshedOrRefusedAsAligned) {
     GTEST_SKIP() << GetParam() << ": grid-aligned, refused: " << what;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Warp, AllBoxes, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "warped" : "unwarped"; });
 
 INSTANTIATE_TEST_SUITE_P(Corpus, AlignedCorpus, ::testing::Values("schoenhardt.poly", "star_vertex.poly"));
 
