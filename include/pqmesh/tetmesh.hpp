@@ -75,7 +75,11 @@ struct TetMeshStats {
   std::int64_t empty_jobs = 0, facet_jobs = 0;            // box jobs per kind
   std::int64_t edge_jobs = 0, vertex_jobs = 0, two_facet_jobs = 0;
   std::int64_t facet_inside = 0, facet_on = 0, facet_beyond = 0;  // facet boxes per §4.5.4 case
-  std::int64_t warped = 0;                                // vertices moved by the second warping pass
+  std::int64_t warped = 0;                                // vertices moved by warping (§4.3, both passes)
+  // Warping was asked for but the warped boxes threw (a warp that inverts a
+  // tetrahedron the freeze loop of tet3d cannot attribute): the mesh is the
+  // unwarped one, and this says why. Empty when warping succeeded or was off.
+  std::string warp_failure;
   std::int64_t boundary_faces = 0;
   int depth = 0;                                          // deepest leaf level
   double root_size = 0;

@@ -99,7 +99,19 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   report("tetrahedra");
   tet3d::BoxMeshOptions bo;
   bo.warp = options.warp;
-  tet3d::BoxMesh boxes = tet3d::mesh_boxes(builder.tree(), tet3d::CornerSet(builder), domain, plan.jobs, bo);
+  const tet3d::CornerSet corners(builder);
+  tet3d::BoxMesh boxes;
+  try {
+    boxes = tet3d::mesh_boxes(builder.tree(), corners, domain, plan.jobs, bo);
+  } catch (const InternalError& e) {
+    // Unwarped boxes are valid by construction (every decision exact on the
+    // prewarped grid); a failure of the warped run is recorded and the
+    // unwarped mesh returned instead, never a silent change of quality.
+    if (!bo.warp) throw;
+    s.warp_failure = e.what();
+    bo.warp = false;
+    boxes = tet3d::mesh_boxes(builder.tree(), corners, domain, plan.jobs, bo);
+  }
   s.facet_inside = boxes.stats.inside;
   s.facet_on = boxes.stats.on_facet;
   s.facet_beyond = boxes.stats.beyond;
