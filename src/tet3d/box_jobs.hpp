@@ -12,9 +12,12 @@
 // Not meshable, listed in `problems` (the mesh of the other jobs then has a
 // hole there): kind Other or Outside-with-component; a VertexCone leaf outside
 // every united box; a piece of a united box of another kind than VertexCone
-// or EmptyInside; a leaf meeting P inside a united box that is not a piece of
-// it (another component, or not balance-adjacent to the
-// vertex's leaf, octree_builder.cpp center_vertices).
+// or EmptyInside.
+// A leaf meeting P inside a united box that is not a piece of it (another
+// component of a duplicated cell: the far wall of a narrow slot at its mouth)
+// gets its ordinary job by kind; the vertex box meshes cone(v) ∩ B only (its
+// facets tested by their sectors at v, square_cases.hpp), so each component
+// of every square of B's surface is triangulated by its own boxes.
 #include <array>
 #include <cstdint>
 #include <string>

@@ -14,7 +14,8 @@
 // Vertex box (P vertex v, its united 2x2x2 box B, §4.1.3; the job names the
 // leaf holding v and which side B extends to): v coned to the π-triangles of
 // B's outer faces (squares of the finer side); B's inner leaves are not meshed
-// one by one (box_jobs.hpp leaves them out). P ∧ B = cone(v) ∩ B is
+// one by one (box_jobs.hpp leaves them out; leaves of another component
+// inside B have their own jobs). v's component P ∧ B = cone(v) ∩ B is
 // star-shaped from v, which lies strictly inside B (Lemma 1; checked
 // exactly). A square of B meeting no face takes its status (inside / outside)
 // from the ring points it shares with squares that do, decided by their local

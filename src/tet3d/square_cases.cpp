@@ -145,6 +145,7 @@ SquareDispatcher::Incidence SquareDispatcher::incidences(const FaceSquare& s, co
       case BoxKind::Facet: meets = plane_meets(f, g); break;
       case BoxKind::Edge:
       case BoxKind::TwoFacet: meets = half_plane_meets(cone(faces.apex), f, g); break;
+      case BoxKind::Vertex: meets = sector_meets(faces.apex, f, g); break;
       default: meets = facet_meets(f, g); break;
     }
     if (meets) m.facets.push_back(f);
@@ -186,6 +187,92 @@ bool SquareDispatcher::half_plane_meets(const EdgeCone& ec, int facet, const Squ
     }
   }
   return false;
+}
+
+// The sector of facet F at P vertex v: the part of F's plane on F's side of
+// both lines of F's edges e1, e2 at v (H1 ∩ H2, F's angle at v below 180°),
+// of either (H1 ∪ H2, above 180°), or H1 (= H2, exactly 180°); H_i is where
+// the sign of e_i's other facet G_i is not `bad` (half_plane_meets). Inside
+// the united box B of v (which holds no other P vertex) F's part of
+// dP ∩ closure(cone(v)) is this sector ∩ B, while F's triangles may also
+// meet B in a piece of another component (the top of the far prong at a slot
+// mouth). The section σ = F's plane ∩ S is a segment whose end points are the
+// corners of S on F's plane and the crossings of F's plane with sides of S;
+// the G_i signs there are exact (orient3d, g_at_f_crossing). σ meets H1 ∪ H2
+// iff an end point lies in one of them. For H1 ∩ H2 with no end point in
+// both, but each H_i holding one: the G_i signs are affine along σ, so σ
+// meets H1 ∩ H2 iff the point x1 where σ crosses line(e1) lies in H2; on
+// line(e1), G_2's sign is that of s in x1 = v + s (a1 - v) (G_2(v) = 0, a1
+// the other end of e1 strictly in H2 at a convex angle), and x1 lies in S's
+// plane x_n = c, so sign(s) = sign(c - v_n) · sign(a1_n - v_n): two exact
+// comparisons (a1_n = v_n would put line(e1) parallel to that plane, where
+// G_1's sign could not change along σ; c = v_n: x1 = v). In a united box v
+// is strictly inside B, so c != v_n there.
+bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry& g) {
+  std::array<int, 2> e{-1, -1};
+  int found = 0;
+  for (const int x : vertex_edges(vertex)) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(x)];
+    if (de.facets[0] != facet && de.facets[1] != facet) continue;
+    if (found < 2) e[static_cast<std::size_t>(found)] = x;
+    ++found;
+  }
+  if (found != 2)
+    throw InternalError("tet3d: facet " + std::to_string(facet) + " has " + std::to_string(found) + " edges at vertex " +
+                        std::to_string(vertex) + " (a vertex box needs two)");
+  const FacetPlane& fp = plane(facet);
+  std::array<const EdgeCone*, 2> ec{&cone(e[0]), &cone(e[1])};
+  std::array<const FacetPlane*, 2> gp{};
+  std::array<Sign, 2> bad{};
+  std::array<Vec3, 2> far{};  // the other end of e_i
+  const Vec3 pv = domain_.plc.vertices[static_cast<std::size_t>(vertex)];
+  for (std::size_t i = 0; i < 2; ++i) {
+    gp[i] = ec[i]->f().facet() == facet ? &ec[i]->g() : &ec[i]->f();
+    bad[i] = ec[i]->convex() ? Sign::Positive : Sign::Negative;
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e[i])];
+    far[i] = domain_.plc.vertices[static_cast<std::size_t>(de.a == vertex ? de.b : de.a)];
+  }
+  // F's angle at v: a2 strictly in H1 (convex), on line(e1) (straight), beyond (reflex).
+  const Sign a2 = gp[0]->side(far[1]);
+  const bool straight = a2 == Sign::Zero, reflex = a2 == bad[0];
+  // End points of σ with their membership in H1, H2.
+  std::array<Sign, 4> sf{};
+  for (std::size_t i = 0; i < 4; ++i) sf[i] = fp.side(g.corners[i]);
+  std::vector<std::array<bool, 2>> ends;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::size_t j = (i + 1) % 4;
+    std::array<bool, 2> in{};
+    if (sf[i] == Sign::Zero) {
+      for (std::size_t k = 0; k < 2; ++k) in[k] = gp[k]->side(g.corners[i]) != bad[k];
+      ends.push_back(in);
+    } else if (sf[i] * sf[j] == Sign::Negative) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        const bool is_f = ec[k]->f().facet() == facet;
+        const Sign at = is_f ? ec[k]->g_at_f_crossing(g.corners[i], g.corners[j])
+                             : ec[k]->f_at_g_crossing(g.corners[i], g.corners[j]);
+        in[k] = at != bad[k];
+      }
+      ends.push_back(in);
+    }
+  }
+  bool any1 = false, any2 = false, both = false;
+  for (const auto& in : ends) {
+    any1 = any1 || in[0];
+    any2 = any2 || in[1];
+    both = both || (in[0] && in[1]);
+  }
+  if (straight) return any1;
+  if (reflex) return any1 || any2;
+  if (both) return true;
+  if (!any1 || !any2) return false;
+  auto coord = [](Vec3 p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); };
+  const double vn = coord(pv, g.n), an = coord(far[0], g.n);
+  // c = v_n: line(e1) meets S's plane at v only (were it in that plane, σ
+  // would lie on it and G_1's sign could not change), so x1 = v, in the sector.
+  if (compare(g.c, vn) == Sign::Zero) return true;
+  const Sign s = compare(g.c, vn) * compare(an, vn);
+  if (s == Sign::Zero) throw InternalError("tet3d: a sector edge of vertex " + std::to_string(vertex) + " parallel to a square");
+  return s == Sign::Positive;
 }
 
 Sign SquareDispatcher::local_status(const Incidence& m, Vec3 p) {

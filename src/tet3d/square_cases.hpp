@@ -9,8 +9,9 @@
 // first decides EXACTLY which of them meet the closed prewarped square S
 // within the closure of the component (square_meets.hpp: the P vertex as a
 // point, P edges as segments; a facet of a facet box by its plane, of an edge
-// or two-facet box by its half-plane from E, of a vertex box by its facet
-// triangles: in each case the part of the facet on the component's closure,
+// or two-facet box by its half-plane from E, of a vertex box v by its sector
+// at v (the angle of the facet at v, spanned by its two edges at v, in its
+// plane): in each case the part of the facet on the component's closure,
 // by the box's model below), giving the set M. A facet shared by two
 // components of a duplicated cube (the floor under a slot) thus counts only
 // for the component whose side of S it crosses. Then:
@@ -40,9 +41,12 @@
 //   vertex box   the status of a ring point shared with a square of the
 //                united box that meets a face (its local model, exact there:
 //                facet_boxes.cpp propagates it over the box surface); exact
-//                locate() in the domain if none is given (the united box holds
-//                v's component only; box_jobs.hpp checks that no other leaf
-//                meeting P lies in it).
+//                locate() in the domain if none is given. The vertex box's
+//                component is cone(v) ∩ B (Lemma 1); another component of P
+//                may pass through B (the far wall of a narrow slot at its
+//                mouth): its leaves get their own jobs (box_jobs.hpp), and
+//                the sector test keeps its part of a facet shared with v
+//                (the slot's top) off v's squares.
 // Duplicates (§4.1.1): the model of each component of a duplicated cube is
 // exact on its own closed cube, so each component's π is S ∩ that component:
 // a square meets P in one piece per component, and each piece is triangulated
@@ -122,6 +126,7 @@ class SquareDispatcher {
   bool facet_meets(int facet, const SquareGeometry& g);
   bool plane_meets(int facet, const SquareGeometry& g);
   bool half_plane_meets(const EdgeCone& cone, int facet, const SquareGeometry& g);
+  bool sector_meets(int vertex, int facet, const SquareGeometry& g);
   std::string describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const;
 
   const OctTree& tree_;

@@ -108,12 +108,11 @@ Plc3 tuning_fork(double w) {
                                0.25);
 }
 
-// DISABLED, and failing: at w = 1e-3 the far side of the neck passes through
-// the united 2x2x2 box of a mouth vertex (leaf 1043 inside the united box of
-// vertex 4), a second component box_jobs cannot mesh yet (ALGORITHM.md §12.4
-// "Duplicates"), so tet_mesh stops with MeshNotSupported. w = 1e-1 meshes
-// (400,766 tets). Enable when united boxes are split per component.
-TEST(GenericGeodesic, DISABLED_TuningForkCountIndependentOfTheNeckWidth) {
+// At w = 1e-3 the far side of the neck passes through the united 2x2x2 box
+// of a mouth vertex (a second component inside it, ALGORITHM.md §12.4
+// "Duplicates"); its leaves get their own jobs and the vertex box meshes only
+// v's sectors of the shared facets.
+TEST(GenericGeodesic, TuningForkCountIndependentOfTheNeckWidth) {
   const TetMeshResult wide = mesh_and_check("tuning fork 1e-1", make_domain(tuning_fork(1e-1)));
   const TetMeshResult narrow = mesh_and_check("tuning fork 1e-3", make_domain(tuning_fork(1e-3)));
   const double ratio =
