@@ -22,12 +22,12 @@
 #include "pqmesh/quality.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "args.hpp"
+#include "format_option.hpp"
 #include "quality_fields.hpp"
 #include "report_format.hpp"
 
 namespace pqmesh::cli {
 namespace {
-
 
 // Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`).
 // Twice the library default 1/8: a quarter of the cells for about 1% change
@@ -35,36 +35,6 @@ namespace {
 // 1/8, 0.12 s instead of 0.44 s; square.poly: 2.410 against 2.442), so the
 // summary costs about what meshing does.
 constexpr double kLfsRefine = 0.25;
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// Four significant digits for angles, ratios and the size estimate.
-std::string fmt4(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", v);
-  return buffer;
-}
-
-std::string fmt_seconds(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", s);
-  return buffer;
-}
-
-// --format F: the names of to_string(MeshFormat) plus the usual extensions.
-std::optional<MeshFormat> format_option(const Args& args) {
-  const auto text = args.option("--format");
-  if (!text) return std::nullopt;
-  if (*text == "vtu") return MeshFormat::Vtu;
-  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
-  if (*text == "msh22") return MeshFormat::Msh22;
-  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
-  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
-  if (*text == "svg") return MeshFormat::Svg;
-  throw UsageError("--format must be vtu, msh, msh22, mesh, node or svg, got '" + *text + "'");
-}
 
 // --max-size S: a positive finite number (0 would mean "no limit" in
 // QuadMeshOptions, but on the command line that is said by leaving it out).
@@ -195,7 +165,7 @@ int run_mesh(const std::vector<std::string>& argv) {
       throw UsageError("--refine-angle must be between 0 (off) and 30 degrees, got '" + *args.option("--refine-angle") + "'");
     run.options.refine_angle_degrees = a;
   }
-  const std::optional<MeshFormat> forced = format_option(args);
+  const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   // Unknown extension: ParseError(Unsupported), exit 2 before any work is done.
   run.format = forced ? *forced : mesh_format_from_path(run.output);
   const bool quiet = args.flag("--quiet");

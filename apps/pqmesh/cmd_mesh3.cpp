@@ -16,6 +16,7 @@
 
 #include "args.hpp"
 #include "commands.hpp"
+#include "format_option.hpp"
 #include "load.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/alpha.hpp"
@@ -33,34 +34,6 @@ namespace pqmesh::cli {
 mv3d::SizeField3 read_size_field3(const std::string& path);
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-std::string fmt4(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", v);
-  return buffer;
-}
-
-std::string fmt_seconds(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", s);
-  return buffer;
-}
-
-// --format F for tetrahedra (no svg).
-std::optional<MeshFormat> format_option3(const Args& args) {
-  const auto text = args.option("--format");
-  if (!text) return std::nullopt;
-  if (*text == "vtu") return MeshFormat::Vtu;
-  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
-  if (*text == "msh22") return MeshFormat::Msh22;
-  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
-  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
-  throw UsageError("--format must be vtu, msh, msh22, mesh or node for a 3D mesh, got '" + *text + "'");
-}
 
 struct Mesh3Run {
   std::string input, output;
@@ -151,7 +124,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
       throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
   }
   run.options.generic_grid = !args.flag("--aligned-grid");
-  const std::optional<MeshFormat> forced = format_option3(args);
+  const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);
   run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work
   if (run.format == MeshFormat::Svg) throw UsageError("a 3D mesh cannot be written as .svg");
   const bool quiet = args.flag("--quiet");

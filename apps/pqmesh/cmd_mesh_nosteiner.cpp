@@ -10,10 +10,10 @@
 // (docs/ALGORITHM.md §11.13). The flag is accepted as a synonym.
 #include <cstdio>
 #include <iostream>
-#include <numbers>
 
 #include "args.hpp"
 #include "commands.hpp"
+#include "format_option.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh_io.hpp"
@@ -23,39 +23,6 @@
 #include "report_format.hpp"
 
 namespace pqmesh::cli {
-namespace {
-
-std::string deg(double radians) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", radians * 180.0 / std::numbers::pi);
-  return buffer;
-}
-
-std::string num4(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", v);
-  return buffer;
-}
-
-std::string secs(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", s);
-  return buffer;
-}
-
-MeshFormat format_of(const Args& args, const std::string& output) {
-  const auto text = args.option("--format");
-  if (!text) return mesh_format_from_path(output);
-  if (*text == "vtu") return MeshFormat::Vtu;
-  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
-  if (*text == "msh22") return MeshFormat::Msh22;
-  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
-  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
-  if (*text == "svg") return MeshFormat::Svg;
-  throw UsageError("--format must be vtu, msh, msh22, mesh, node or svg, got '" + *text + "'");
-}
-
-}  // namespace
 
 int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline"},
@@ -74,7 +41,8 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
     options.r_mesh.refine_angle_degrees = a;
   }
   options.keep_better_cdt = !args.flag("--pipeline");
-  const MeshFormat format = format_of(args, output);
+  const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
+  const MeshFormat format = forced ? *forced : mesh_format_from_path(output);
   const bool quiet = args.flag("--quiet");
 
   const Domain2 domain = make_domain(read_pslg(input));
@@ -100,30 +68,30 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
             << "domain     " << domain.pslg.vertices.size() << " vertices, " << segments << " segments, "
             << domain.loops.size() - 1 << " holes, area " << fmt(domain.area) << '\n'
             << "mode       no boundary Steiner points (thesis ch. 5): every point added lies strictly inside\n"
-            << "bound g    g(P) = " << deg(s.g) << " deg; any Steiner-free-boundary triangulation has min angle <= "
-            << "min(60, " << num4(s.constant) << " * g) = " << deg(s.upper_bound) << " deg\n"
-            << "angles     min " << deg(s.min_angle) << " deg; achieved / g = " << num4(s.ratio) << '\n'
-            << "pipeline   " << to_string(s.pipeline_path) << ": min " << deg(s.pipeline_min_angle) << " deg, / g = "
-            << num4(s.pipeline_min_angle / s.g) << ", " << s.pipeline_triangles << " triangles, "
+            << "bound g    g(P) = " << fmt4_degrees(s.g) << " deg; any Steiner-free-boundary triangulation has min angle <= "
+            << "min(60, " << fmt4(s.constant) << " * g) = " << fmt4_degrees(s.upper_bound) << " deg\n"
+            << "angles     min " << fmt4_degrees(s.min_angle) << " deg; achieved / g = " << fmt4(s.ratio) << '\n'
+            << "pipeline   " << to_string(s.pipeline_path) << ": min " << fmt4_degrees(s.pipeline_min_angle) << " deg, / g = "
+            << fmt4(s.pipeline_min_angle / s.g) << ", " << s.pipeline_triangles << " triangles, "
             << s.pipeline_vertices << " vertices"
             << (s.pipeline_path == NoSteinerPath::Full ? " (wedges + Q to R + mesh of R; no fallback)"
                                                        : " (FALLBACK)")
             << '\n'
-            << "cdt        constrained Delaunay of the input (no point added): min " << deg(s.cdt_min_angle)
+            << "cdt        constrained Delaunay of the input (no point added): min " << fmt4_degrees(s.cdt_min_angle)
             << " deg; pipeline / cdt = "
-            << (s.cdt_min_angle > 0 ? num4(s.pipeline_min_angle / s.cdt_min_angle) : "-") << '\n'
+            << (s.cdt_min_angle > 0 ? fmt4(s.pipeline_min_angle / s.cdt_min_angle) : "-") << '\n'
             << "path       " << to_string(s.path)
             << (s.path == NoSteinerPath::CdtBetter ? " (output is the CDT: larger min angle)" : "")
             << (s.fallback_reason.empty() ? "" : "\nreason     " + s.fallback_reason) << '\n'
             << "mesh       " << s.triangles << " triangles, " << s.vertices << " vertices (" << s.wedge_triangles
             << " wedge, " << s.between_triangles << " Q-to-R, " << s.r_triangles << " in R, " << s.cdt_triangles
             << " CDT)\n"
-            << "regions    min angle wedges " << deg(s.wedge_min_angle) << ", Q-to-R " << deg(s.between_min_angle)
-            << ", R " << deg(s.r_min_angle) << " deg; dQ " << s.q_vertices << " vertices, dR " << s.r_vertices
+            << "regions    min angle wedges " << fmt4_degrees(s.wedge_min_angle) << ", Q-to-R " << fmt4_degrees(s.between_min_angle)
+            << ", R " << fmt4_degrees(s.r_min_angle) << " deg; dQ " << s.q_vertices << " vertices, dR " << s.r_vertices
             << " vertices\n"
-            << "time (s)   bound " << secs(s.seconds_bound) << ", Q " << secs(s.seconds_q) << ", R "
-            << secs(s.seconds_r) << ", Q-to-R " << secs(s.seconds_between) << ", verify " << secs(s.seconds_verify)
-            << ", cdt " << secs(s.seconds_cdt) << "; total " << secs(s.seconds_total) << '\n'
+            << "time (s)   bound " << fmt_seconds(s.seconds_bound) << ", Q " << fmt_seconds(s.seconds_q) << ", R "
+            << fmt_seconds(s.seconds_r) << ", Q-to-R " << fmt_seconds(s.seconds_between) << ", verify " << fmt_seconds(s.seconds_verify)
+            << ", cdt " << fmt_seconds(s.seconds_cdt) << "; total " << fmt_seconds(s.seconds_total) << '\n'
             << "check      valid (no boundary Steiner): " << check.elements << " triangles, " << check.vertices
             << " vertices, " << check.boundary_faces << " boundary edges; area " << fmt(check.mesh_volume)
             << " (domain " << fmt(check.domain_volume) << ")\n"

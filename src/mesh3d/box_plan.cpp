@@ -14,32 +14,6 @@ namespace pqmesh::mesh3d {
 
 namespace {
 
-// Every facet triangle meeting the closed cube of leaf n lies in a closed
-// half-space bounded by a cube plane that misses the open cube (exact
-// comparisons of input coordinates with the exact box planes).
-bool faces_on_boundary_only(const mv3d::OctreeBuilder& builder, std::int32_t n) {
-  const Domain3& dom = builder.domain();
-  const mv3d::Cube c = builder.cube(n);
-  const double lo[3] = {c.lo.x, c.lo.y, c.lo.z};
-  const double hi[3] = {c.hi.x, c.hi.y, c.hi.z};
-  for (const int t : builder.data(n).cube_tris) {
-    const auto& tri = dom.facet_triangles[static_cast<std::size_t>(t)];
-    bool separated = false;
-    for (int a = 0; a < 3 && !separated; ++a) {
-      bool below = true, above = true;
-      for (const int v : tri) {
-        const Vec3& p = dom.plc.vertices[static_cast<std::size_t>(v)];
-        const double x = a == 0 ? p.x : (a == 1 ? p.y : p.z);
-        below = below && x <= lo[a];
-        above = above && x >= hi[a];
-      }
-      separated = below || above;
-    }
-    if (!separated) return false;
-  }
-  return true;
-}
-
 std::string describe_leaf(const mv3d::OctreeBuilder& builder, std::int32_t n, const mv3d::LeafFaces& faces) {
   const mv3d::Cube c = builder.cube(n);
   std::ostringstream s;
@@ -67,7 +41,7 @@ BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder) {
       ++plan.empty_jobs;
       continue;
     }
-    if (faces_on_boundary_only(builder, n)) {
+    if (tet3d::facets_on_cube_boundary_only(builder, n)) {
       const Vec3 centre = tet3d::grid_coordinates(builder.tree(), tet3d::key_centre(builder.tree().key(n)));
       if (locate(builder.domain(), centre) == Location::Inside) {
         plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = -1});

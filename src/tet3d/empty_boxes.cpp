@@ -12,15 +12,12 @@ bool is_empty_inside(const mv3d::OctreeBuilder& builder, std::int32_t n) {
   return d.has_component && d.rep_triangle == -1;
 }
 
-bool is_flush_inside(const mv3d::OctreeBuilder& builder, std::int32_t n) {
-  if (is_empty_inside(builder, n)) return true;
-  const mv3d::NodeData3& d = builder.data(n);
-  if (!d.has_component) return false;
+bool facets_on_cube_boundary_only(const mv3d::OctreeBuilder& builder, std::int32_t n) {
   const Domain3& dom = builder.domain();
   const mv3d::Cube c = builder.cube(n);
   const double lo[3] = {c.lo.x, c.lo.y, c.lo.z};
   const double hi[3] = {c.hi.x, c.hi.y, c.hi.z};
-  for (const int t : d.cube_tris) {
+  for (const int t : builder.data(n).cube_tris) {
     const auto& tri = dom.facet_triangles[static_cast<std::size_t>(t)];
     bool separated = false;
     for (int a = 0; a < 3 && !separated; ++a) {
@@ -35,8 +32,15 @@ bool is_flush_inside(const mv3d::OctreeBuilder& builder, std::int32_t n) {
     }
     if (!separated) return false;
   }
+  return true;
+}
+
+bool is_flush_inside(const mv3d::OctreeBuilder& builder, std::int32_t n) {
+  if (is_empty_inside(builder, n)) return true;
+  if (!builder.data(n).has_component || !facets_on_cube_boundary_only(builder, n)) return false;
   // No facet meets the open cube, so it lies entirely inside or outside P;
   // its centre (an exact grid point) decides.
+  const Domain3& dom = builder.domain();
   return locate(dom, grid_coordinates(builder.tree(), key_centre(builder.tree().key(n)))) == Location::Inside;
 }
 

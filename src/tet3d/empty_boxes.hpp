@@ -28,6 +28,11 @@ namespace pqmesh::tet3d {
 // (NodeData3: has_component && rep_triangle == -1).
 bool is_empty_inside(const mv3d::OctreeBuilder& builder, std::int32_t n);
 
+// Every facet triangle meeting leaf n's closed cube lies in a closed
+// half-space bounded by one of the cube's planes and missing the open cube
+// (exact comparisons of input coordinates with the dyadic box planes).
+bool facets_on_cube_boundary_only(const mv3d::OctreeBuilder& builder, std::int32_t n);
+
 // Leaf n's open cube lies in P and every P facet triangle meeting its closed
 // cube lies in a closed half-space bounded by one of the cube's planes and
 // missing the open cube (so P faces touch the cube only on its boundary, e.g.

@@ -89,29 +89,10 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Slow, GenericCorpus,
 // Issue 5 item 6: the tuning fork (a square cavity opened to the outside by a
 // neck of width w; mv3d/octree_geodesic_test.cpp) has no feature of size w
 // inside P, so its tetrahedron count may change by at most 1.5x between
-// w = 1e-1 and w = 1e-3. Widths are multiples of 2^-12 (dyadic coordinates).
-Plc3 tuning_fork(double w) {
-  w = std::round(w * 4096) / 4096;
-  const double a = 0.5 - w / 2, b = 0.5 + w / 2;
-  return mv3d::octest::extrude({{0, 0},
-                                {1, 0},
-                                {1, 1},
-                                {b, 1},
-                                {b, 0.75},
-                                {0.75, 0.75},
-                                {0.75, 0.25},
-                                {0.25, 0.25},
-                                {0.25, 0.75},
-                                {a, 0.75},
-                                {a, 1},
-                                {0, 1}},
-                               0.25);
-}
+// w = 1e-1 and w = 1e-3 (octest::tuning_fork: widths rounded to multiples of
+// 2^-12, dyadic coordinates).
+using mv3d::octest::tuning_fork;
 
-// At w = 1e-3 the far side of the neck passes through the united 2x2x2 box
-// of a mouth vertex (a second component inside it, ALGORITHM.md §12.4
-// "Duplicates"); its leaves get their own jobs and the vertex box meshes only
-// v's sectors of the shared facets.
 TEST(GenericGeodesic, TuningForkCountIndependentOfTheNeckWidth) {
   const TetMeshResult wide = mesh_and_check("tuning fork 1e-1", make_domain(tuning_fork(1e-1)));
   const TetMeshResult narrow = mesh_and_check("tuning fork 1e-3", make_domain(tuning_fork(1e-3)));

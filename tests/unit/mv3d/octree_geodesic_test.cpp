@@ -43,23 +43,7 @@ namespace {
 double snap(double w) { return std::round(w * 4096) / 4096; }
 
 using octest::extrude;
-
-Plc3 tuning_fork(double w) {
-  const double a = 0.5 - w / 2, b = 0.5 + w / 2;
-  return extrude({{0, 0},
-                  {1, 0},
-                  {1, 1},
-                  {b, 1},
-                  {b, 0.75},
-                  {0.75, 0.75},
-                  {0.75, 0.25},
-                  {0.25, 0.25},
-                  {0.25, 0.75},
-                  {a, 0.75},
-                  {a, 1},
-                  {0, 1}},
-                 0.25);
-}
+using octest::tuning_fork;
 
 Plc3 heat_sink(double w) {
   const double pitch = 0.125, half_stem = 51.0 / 4096, base = 0.125, flange = 0.4375, top = 0.5;

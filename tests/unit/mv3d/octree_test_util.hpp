@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,6 +47,28 @@ inline Plc3 extrude(const std::vector<Vec2>& poly, double depth) {
     plc.facets.push_back(side);
   }
   return plc;
+}
+
+// The tuning fork of the geodesic tests (issue 4 item 4, issue 5 item 6): the
+// plate [0,1]^2 x [0,1/4] minus the square cavity [1/4,3/4]^2 and a neck of
+// width w (rounded to a multiple of 2^-12, so every coordinate is dyadic)
+// that opens the cavity to the outside. w = 1e-1 is data/3d/tuning_fork.poly.
+inline Plc3 tuning_fork(double w) {
+  w = std::round(w * 4096) / 4096;
+  const double a = 0.5 - w / 2, b = 0.5 + w / 2;
+  return extrude({{0, 0},
+                  {1, 0},
+                  {1, 1},
+                  {b, 1},
+                  {b, 0.75},
+                  {0.75, 0.75},
+                  {0.75, 0.25},
+                  {0.25, 0.25},
+                  {0.25, 0.75},
+                  {a, 0.75},
+                  {a, 1},
+                  {0, 1}},
+                 0.25);
 }
 
 inline Domain3 load_corpus(const std::string& name) {

@@ -1,0 +1,20 @@
+#include "format_option.hpp"
+
+#include <string>
+
+namespace pqmesh::cli {
+
+std::optional<MeshFormat> format_option(const Args& args, bool allow_svg) {
+  const auto text = args.option("--format");
+  if (!text) return std::nullopt;
+  if (*text == "vtu") return MeshFormat::Vtu;
+  if (*text == "msh" || *text == "msh41") return MeshFormat::Msh41;
+  if (*text == "msh22") return MeshFormat::Msh22;
+  if (*text == "mesh" || *text == "medit") return MeshFormat::Medit;
+  if (*text == "node" || *text == "tetgen") return MeshFormat::TetgenNodeEle;
+  if (allow_svg && *text == "svg") return MeshFormat::Svg;
+  if (allow_svg) throw UsageError("--format must be vtu, msh, msh22, mesh, node or svg, got '" + *text + "'");
+  throw UsageError("--format must be vtu, msh, msh22, mesh or node for a 3D mesh, got '" + *text + "'");
+}
+
+}  // namespace pqmesh::cli
