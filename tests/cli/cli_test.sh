@@ -2,27 +2,8 @@
 # End-to-end tests of the pqmesh command line: exit codes, messages naming ids
 # and lines, help for every subcommand, and no partial output on failure.
 # usage: cli_test.sh PQMESH_BINARY DATA_DIR FIXTURE_DIR
-set -u
 pqmesh=$1 data=$2 fixtures=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-
-ok() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect CODE DESCRIPTION -- COMMAND...: runs COMMAND, checks the exit code,
-# leaves stdout in $work/out and stderr in $work/err.
-expect() {
-  local want=$1 what=$2
-  shift 3
-  "$@" > "$work/out" 2> "$work/err"
-  local got=$?
-  if [[ $got -eq $want ]]; then ok; else fail "$what: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"; fi
-}
-contains() {  # contains FILE PATTERN DESCRIPTION
-  if grep -qE -- "$2" "$1"; then ok; else fail "$3: '$2' not in $(head -c 400 "$1")"; fi
-}
+source "$(dirname "$0")/harness.sh"
 
 # Help for the tool and every subcommand.
 expect 0 "top-level help" -- "$pqmesh" --help
@@ -192,5 +173,4 @@ contains "$work/err" "field3_short.txt:1: " "bad 3D size field names its line"
 expect 64 "octree --max-size 0" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/never_octree_h.vtu" --max-size 0
 if [[ ! -e $work/never_octree_f.vtu && ! -e $work/never_octree_h.vtu ]]; then ok; else fail "refused octree size runs left a file"; fi
 
-echo "$passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish cli_test

@@ -2,33 +2,8 @@
 # End-to-end tests of `pqmesh mesh` on 3D input (issue 5): exit codes, no
 # output file on failure, the summary lines, deterministic bytes.
 # usage: mesh3d_test.sh PQMESH_BINARY DATA_DIR FIXTURE_DIR
-set -u
 pqmesh=$1 data=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-
-ok() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect CODE DESCRIPTION -- COMMAND...: runs COMMAND, checks the exit code,
-# leaves stdout in $work/out and stderr in $work/err.
-expect() {
-  local want=$1 what=$2
-  shift 3
-  "$@" > "$work/out" 2> "$work/err"
-  local got=$?
-  if [[ $got -eq $want ]]; then ok; else fail "$what: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"; fi
-}
-contains() {  # contains FILE PATTERN DESCRIPTION
-  if grep -qE -- "$2" "$1"; then ok; else fail "$3: '$2' not in $(head -c 600 "$1")"; fi
-}
-absent() {  # absent PATH DESCRIPTION
-  if [[ -e $1 ]]; then fail "$2: $1 exists"; else ok; fi
-}
-empty() {  # empty FILE DESCRIPTION
-  if [[ -s $1 ]]; then fail "$2: $(head -c 300 "$1")"; else ok; fi
-}
+source "$(dirname "$0")/harness.sh"
 
 # Grid-aligned models mesh completely on the aligned grid.
 for m in cube l_block; do
@@ -115,5 +90,4 @@ else fail "octree --generic-grid: exit $code"; fi
 expect 0 "octree aligned" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/oct2.vtu"
 contains "$work/out" "^grid +aligned" "octree grid line"
 
-echo "mesh3d_test: $passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish mesh3d_test

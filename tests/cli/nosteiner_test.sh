@@ -3,23 +3,8 @@
 # meshed, the summary has its lines, the written mesh passes
 # 'pqmesh check --no-boundary-steiner' on its own, and failures write nothing.
 # usage: nosteiner_test.sh PQMESH_BINARY DATA_DIR FIXTURE_DIR
-set -u
 pqmesh=$1 data=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
-expect() {  # expect CODE DESCRIPTION -- COMMAND...
-  local want=$1 what=$2
-  shift 3
-  "$@" >"$work/out" 2>"$work/err"
-  local got=$?
-  if [[ $got -eq $want ]]; then ok; else fail "$what: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"; fi
-}
-contains() {  # contains FILE PATTERN DESCRIPTION
-  if grep -qE -- "$2" "$1"; then ok; else fail "$3: '$2' not in $(head -c 600 "$1")"; fi
-}
+source "$(dirname "$0")/harness.sh"
 
 for f in "$data"/2d/*.poly; do
   b=$(basename "$f" .poly)
@@ -50,5 +35,4 @@ printf '3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/fla
 expect 2 "degenerate input" -- "$pqmesh" mesh "$work/flat.poly" -o "$work/flat.vtu" --no-boundary-steiner
 [[ -e $work/flat.vtu ]] && fail "output written for an invalid input" || ok
 
-echo "nosteiner cli: $passed passed, $failed failed"
-((failed == 0))
+finish nosteiner_test
