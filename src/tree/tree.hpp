@@ -240,13 +240,20 @@ class Tree {
 
   enum class Mode { AllNeighbours, LargerNeighbours, Overlapping };
 
+  // Checked access. The throw lives in a separate cold function so that this
+  // stays small enough to inline (every per-node query goes through it).
   const Node& node(std::int32_t n) const {
-    if (n < 0 || n >= size()) throw InternalError("tree: node id " + std::to_string(n) + " out of range");
+    if (n < 0 || n >= size()) [[unlikely]]
+      throw_bad_node(n);
     return nodes_[static_cast<std::size_t>(n)];
   }
   Node& node(std::int32_t n) {
-    if (n < 0 || n >= size()) throw InternalError("tree: node id " + std::to_string(n) + " out of range");
+    if (n < 0 || n >= size()) [[unlikely]]
+      throw_bad_node(n);
     return nodes_[static_cast<std::size_t>(n)];
+  }
+  [[noreturn, gnu::cold, gnu::noinline]] static void throw_bad_node(std::int32_t n) {
+    throw InternalError("tree: node id " + std::to_string(n) + " out of range");
   }
   const Node& at(std::int32_t n) const { return nodes_[static_cast<std::size_t>(n)]; }
   Node& at(std::int32_t n) { return nodes_[static_cast<std::size_t>(n)]; }

@@ -30,7 +30,7 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
   // Generic grid (root_cube.hpp choose_generic_root_cube): every plane is
   // shifted by offset[a] = K * 2^ge. Planes stay integers times 2^ge when the
   // spacing at max_level_ is at least 2^(ge+1), and exact doubles when their
-  // magnitude (root and extended box: |origin| + 3S + |offset|) is <= 2^(53+ge).
+  // magnitude (root and extended box: max(|origin - 2S|, |origin + 3S|) + |offset|) is <= 2^(53+ge).
   for (int a = 0; a < D; ++a) {
     const double off = root.offset[a];
     root_off_[a] = off;
@@ -41,7 +41,10 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
     int ge = oe - 53;  // off is an integer times 2^ge; raise ge to off's lowest set bit
     while (std::ldexp(off, -(ge + 1)) == std::floor(std::ldexp(off, -(ge + 1)))) ++ge;
     while (max_level_ > 0 && root_exp_ - max_level_ - 1 < ge + 1) --max_level_;
-    const double reach = std::fabs(root.origin[a]) + 3 * root.size + std::fabs(off);
+    // Planes run from origin - 2S to origin + 3S (root and extended box);
+    // never more than choose_generic_root_cube's bound.
+    const double reach = std::fmax(std::fabs(root.origin[a] - 2 * root.size), std::fabs(root.origin[a] + 3 * root.size)) +
+                         std::fabs(off);
     if (!(reach <= std::ldexp(1.0, 53 + ge)))
       throw InternalError("tree: root offset along axis " + std::to_string(a) + " is too fine for exact box planes");
   }
@@ -52,14 +55,14 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
 }
 
 template <int D>
-double Tree<D>::key_plane(const Key& k, int axis, bool upper) const {
+inline double Tree<D>::key_plane(const Key& k, int axis, bool upper) const {
   const std::int64_t n = (root_m_[axis] << k.level) + k.q[axis] + (upper ? 2 : 0);
   if (k.level <= max_level_) return static_cast<double>(n) * half_side_[static_cast<std::size_t>(k.level)] + root_off_[axis];
   return std::ldexp(static_cast<double>(n), root_exp_ - k.level - 1) + root_off_[axis];
 }
 
 template <int D>
-typename Tree<D>::Box Tree<D>::box(std::int32_t n) const {
+inline typename Tree<D>::Box Tree<D>::box(std::int32_t n) const {
   Box b;
   const Key& k = key(n);
   for (int a = 0; a < D; ++a) {
