@@ -2,18 +2,18 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
 namespace pqmesh {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();  // 2^-52
-
-// Below this permanent the error analysis could be spoiled by underflow, so
-// the exact path is taken unconditionally.
-constexpr double kTinyPermanent = 1e-280;
+using detail::kTinyPermanent;
+constexpr double kEps = detail::kPredicateEps;
 
 // The error-bound constants are deliberately generous (a few times the bounds
 // that a careful rounding analysis gives for these expression trees): a too
@@ -29,6 +29,15 @@ std::optional<Sign> filter(double det, double permanent, double factor) {
 }
 
 Sign sign_of_mpq(const mpq_class& v) { return static_cast<Sign>(sgn(v)); }
+
+// Veltkamp's split: hi + lo == a, each with at most 26 significant bits
+// (exact unless 2^27 a overflows).
+void split_veltkamp(double a, double& hi, double& lo) {
+  const double c = 134217729.0 * a;  // 2^27 + 1
+  const double big = c - a;
+  hi = c - big;
+  lo = a - hi;
+}
 
 // Second stage, before GMP: evaluate the same expression with error-free
 // transformations (TwoSum; Dekker's product error with Veltkamp's split) and
@@ -56,8 +65,8 @@ class Certified {
     const double p = a * b;
     if (!exact_) return p;
     double ah, al, bh, bl;
-    split(a, ah, al);
-    split(b, bh, bl);
+    split_veltkamp(a, ah, al);
+    split_veltkamp(b, bh, bl);
     if (((ah * bh - p) + ah * bl + al * bh) + al * bl != 0) exact_ = false;
     return p;
   }
@@ -67,13 +76,70 @@ class Certified {
     const double m = std::abs(v);
     if (m != 0 && !(m >= 0x1p-200 && m <= 0x1p200)) exact_ = false;
   }
-  static void split(double a, double& hi, double& lo) {
-    const double c = 134217729.0 * a;  // 2^27 + 1
-    const double big = c - a;
-    hi = c - big;
-    lo = a - hi;
-  }
   bool exact_ = true;
+};
+
+// Third stage of orient2d, before GMP: the determinant expanded into six
+// coordinate products, each split by Dekker's two-product into a double and
+// its exact rounding error, and the twelve doubles summed exactly as a
+// nonoverlapping expansion (Knuth's two-sum, Shewchuk's "grow expansion" with
+// zero elimination). Nothing is rounded, so the sign is exact; it decides the
+// near-collinear cases with full-precision coordinates (e.g. a Steiner point
+// rounded onto a slanted segment tested against the corners of its ulp box,
+// which lie a subnormal away from 0 when the point is on an axis) that the
+// certified stage cannot, at a fraction of GMP's cost.
+// Range: each axis is first scaled by a power of two (exact) so that its
+// largest magnitude is in [1/2, 1); the sign of det is unchanged (it is
+// multiplied by a positive factor). The transformations are then exact when
+// every nonzero scaled coordinate is at least 2^-400: products lie in
+// [2^-800, 1) and every partial product of the split is a multiple of at
+// least 2^-906, far from the subnormal range, and nothing can overflow.
+// scale_axis returns false when that does not hold (or a value is not finite).
+bool scale_axis(double (&v)[3]) {
+  const double m = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  if (!std::isfinite(m)) return false;
+  if (m == 0) return true;
+  int e = 0;
+  std::frexp(m, &e);  // m = f 2^e, f in [1/2, 1)
+  for (double& x : v) {
+    x = std::ldexp(x, -e);  // exact whenever the result is at least 2^-1022
+    if (x != 0 && std::abs(x) < 0x1p-400) return false;
+  }
+  return true;
+}
+
+// p + err == a * b exactly (no overflow or underflow).
+void two_product(double a, double b, double& p, double& err) {
+  p = a * b;
+  double ah, al, bh, bl;
+  split_veltkamp(a, ah, al);
+  split_veltkamp(b, bh, bl);
+  err = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
+// A sum of doubles held exactly: components nonoverlapping, by increasing
+// magnitude, zeros removed; so the sign of the sum is that of the last one.
+template <int N>
+class Expansion {
+ public:
+  void add(double b) {  // adding a double adds at most one component
+    double q = b;
+    int m = 0;
+    for (int i = 0; i < n_; ++i) {
+      const double s = q + c_[i];  // two-sum: s + t == q + c_[i] exactly
+      const double bv = s - q, av = s - bv;
+      const double t = (q - av) + (c_[i] - bv);
+      if (t != 0) c_[m++] = t;
+      q = s;
+    }
+    if (q != 0 || m == 0) c_[m++] = q;
+    n_ = m;
+  }
+  Sign sign() const { return n_ == 0 ? Sign::Zero : sign_of(c_[n_ - 1]); }
+
+ private:
+  double c_[N] = {};
+  int n_ = 0;
 };
 
 mpq_class q(double v) { return mpq_class(v); }  // exact: every finite double is a dyadic rational
@@ -91,17 +157,33 @@ mpq_class det3(const mpq_class m[3][3]) {
 
 }  // namespace
 
-Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
-  const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
-  const double l = acx * bcy, r = acy * bcx;
-  const double det = l - r;
-  const double permanent = std::abs(l) + std::abs(r);
-  if (const auto s = filter(det, permanent, 8)) return *s;
-  Certified e;
-  const double ex = e.diff(a.x, c.x), fx = e.diff(b.x, c.x), ey = e.diff(a.y, c.y), fy = e.diff(b.y, c.y);
-  const double exact = e.diff(e.prod(ex, fy), e.prod(ey, fx));
-  if (e.exact()) return sign_of(exact);
+Sign detail::orient2d_after_filter(Vec2 a, Vec2 b, Vec2 c) {
+  {
+    Certified e;
+    const double ex = e.diff(a.x, c.x), fx = e.diff(b.x, c.x), ey = e.diff(a.y, c.y), fy = e.diff(b.y, c.y);
+    const double exact = e.diff(e.prod(ex, fy), e.prod(ey, fx));
+    if (e.exact()) return sign_of(exact);
+  }
+  Sign s = Sign::Zero;
+  if (orient2d_expansion(a, b, c, s)) return s;
   return orient2d_exact(a, b, c);
+}
+
+bool detail::orient2d_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign) {
+  double x[3] = {a.x, b.x, c.x}, y[3] = {a.y, b.y, c.y};
+  if (!scale_axis(x) || !scale_axis(y)) return false;
+  // det(a - c, b - c) = (a x b) + (b x c) + (c x a), u x v = u.x v.y - u.y v.x:
+  // six products, each split exactly into its double and its rounding error.
+  const double factors[6][2] = {{x[0], y[1]}, {-y[0], x[1]}, {x[1], y[2]}, {-y[1], x[2]}, {x[2], y[0]}, {-y[2], x[0]}};
+  Expansion<12> sum;
+  for (const auto& f : factors) {
+    double p = 0, err = 0;
+    two_product(f[0], f[1], p, err);
+    sum.add(err);
+    sum.add(p);
+  }
+  sign = sum.sign();
+  return true;
 }
 
 Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
@@ -131,15 +213,55 @@ Sign orient2d_projected(Vec3 a, Vec3 b, Vec3 c, int drop) {
   return orient2d(project(a), project(b), project(c));
 }
 
-Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
-  const double cdx = c.x - d.x, cdy = c.y - d.y;
-  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdx * cdy - bdy * cdx) + blift * (cdx * ady - cdy * adx) + clift * (adx * bdy - ady * bdx);
-  const double permanent = alift * (std::abs(bdx * cdy) + std::abs(bdy * cdx)) +
-                           blift * (std::abs(cdx * ady) + std::abs(cdy * adx)) +
-                           clift * (std::abs(adx * bdy) + std::abs(ady * bdx));
-  if (const auto s = filter(det, permanent, 32)) return *s;
+namespace {
+
+// d = x - y, true when that is exact (Knuth's two-difference leaves no error;
+// NaN and infinities fail).
+bool exact_difference(double x, double y, double& d) {
+  d = x - y;
+  const double y_virtual = x - d, x_virtual = d + y_virtual;
+  return (x - x_virtual) + (y_virtual - y) == 0;
+}
+
+// Widens [low, top] to cover the set bits of v: v is a multiple of 2^low and
+// below 2^(top + 1) in magnitude. False for subnormals, infinities, NaN.
+bool note_bits(double v, int& low, int& top) {
+  if (v == 0) return true;
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  const int e = static_cast<int>((bits >> 52) & 0x7FF);
+  if (e == 0 || e == 0x7FF) return false;
+  const std::uint64_t mantissa = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+  low = std::min(low, e - 1075 + std::countr_zero(mantissa));
+  top = std::max(top, e - 1023);
+  return true;
+}
+
+}  // namespace
+
+bool detail::incircle_small_integer(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Sign& sign) {
+  double v[6];
+  if (!exact_difference(a.x, d.x, v[0]) || !exact_difference(a.y, d.y, v[1]) || !exact_difference(b.x, d.x, v[2]) ||
+      !exact_difference(b.y, d.y, v[3]) || !exact_difference(c.x, d.x, v[4]) || !exact_difference(c.y, d.y, v[5]))
+    return false;
+  int low = std::numeric_limits<int>::max(), top = std::numeric_limits<int>::min();
+  for (const double x : v)
+    if (!note_bits(x, low, top)) return false;
+  if (top < low) {  // every difference is zero: four equal points
+    sign = Sign::Zero;
+    return true;
+  }
+  // v[i] = k_i 2^low with |k_i| < 2^kBits; the range keeps 2^(4 low) and the
+  // largest value far from underflow and overflow.
+  constexpr int kBits = 12;
+  if (top + 1 - low > kBits || low < -200 || top > 200) return false;
+  const double ax = v[0], ay = v[1], bx = v[2], by = v[3], cx = v[4], cy = v[5];
+  const double al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;
+  sign = sign_of(al * (bx * cy - by * cx) + bl * (cx * ay - cy * ax) + cl * (ax * by - ay * bx));
+  return true;
+}
+
+Sign detail::incircle_after_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (Sign s = Sign::Zero; incircle_small_integer(a, b, c, d, s)) return s;
   {
     Certified e;
     const double ax = e.diff(a.x, d.x), ay = e.diff(a.y, d.y), bx = e.diff(b.x, d.x), by = e.diff(b.y, d.y);
@@ -207,11 +329,7 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   return -sign_of_mpq(exact);
 }
 
-Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-  const double l = ux * vx, r = uy * vy;
-  const double det = l + r, permanent = std::abs(l) + std::abs(r);
-  if (const auto s = filter(det, permanent, 8)) return *s;
+Sign detail::dot_sign_after_filter(Vec2 a, Vec2 b, Vec2 c) {
   return sign_of_mpq((q(b.x) - q(a.x)) * (q(c.x) - q(a.x)) + (q(b.y) - q(a.y)) * (q(c.y) - q(a.y)));
 }
 

@@ -7,8 +7,11 @@
 // bound on its rounding error (a constant times machine epsilon times the
 // permanent, the same expression with every term replaced by its absolute
 // value); when the double result does not clear the bound, the determinant is
-// recomputed exactly with GMP rationals. There are no tolerances: Zero means
-// exactly degenerate.
+// recomputed exactly: orient2d and incircle first try an error-free
+// evaluation in doubles (exact for few-bit coordinates such as quadtree grid
+// corners), orient2d then an exact expansion sum (any coordinates in a wide
+// range), and whatever is left goes to GMP rationals. There are no
+// tolerances: Zero means exactly degenerate.
 //
 // Tie-break: the predicates report Zero honestly. A caller that must decide a
 // degenerate case does so by a symbolic perturbation documented at the call
@@ -27,8 +30,50 @@ constexpr Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)
 constexpr Sign sign_of(double v) { return v > 0 ? Sign::Positive : (v < 0 ? Sign::Negative : Sign::Zero); }
 constexpr Sign operator*(Sign a, Sign b) { return static_cast<Sign>(static_cast<int>(a) * static_cast<int>(b)); }
 
+namespace detail {
+constexpr double kPredicateEps = std::numeric_limits<double>::epsilon();  // 2^-52
+// Below this permanent the error analysis could be spoiled by underflow, so
+// the double filter never decides (the later stages do).
+constexpr double kTinyPermanent = 1e-280;
+// The stages after the double filter (predicates.cpp): the error-free
+// "certified" evaluation, then (orient2d) an exact expansion sum, then GMP.
+// Called only when the inline filter below cannot decide.
+Sign orient2d_after_filter(Vec2 a, Vec2 b, Vec2 c);
+Sign incircle_after_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+Sign dot_sign_after_filter(Vec2 a, Vec2 b, Vec2 c);
+// The expansion stage of orient2d on its own (for tests): the exact sign of
+// det(a - c, b - c) from twelve error-free products summed as a
+// nonoverlapping expansion (no rounding anywhere), after scaling each axis
+// by a power of two. Returns false (no answer) when the coordinates are not
+// finite or the nonzero magnitudes on one axis span more than about 2^400.
+bool orient2d_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign);
+// The first stage of incircle after the filter, on its own (for tests): when
+// the six differences a - d, ..., c - d are exact and are all k 2^u for
+// integers |k| < 2^12 (one u; quadtree grid corners near each other), every
+// value of the double evaluation is an integer times a power of 2^u below
+// 2^53, so it is exact and its sign is the answer. Returns false otherwise.
+bool incircle_small_integer(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Sign& sign);
+}  // namespace detail
+
 // Positive when a, b, c turn counter-clockwise: sign of det(b - a, c - a).
-Sign orient2d(Vec2 a, Vec2 b, Vec2 c);
+// The double filter is inline (it decides almost every call; the mesher calls
+// this tens of millions of times): the determinant in double with the error
+// bound 8 eps times the permanent |l| + |r| (a few times the bound a careful
+// rounding analysis gives); a permanent of exactly 0 means every term is 0.
+inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
+  const double l = acx * bcy, r = acy * bcx;
+  const double det = l - r;
+  const double permanent = std::abs(l) + std::abs(r);
+  if (permanent > detail::kTinyPermanent) {
+    const double bound = 8 * detail::kPredicateEps * permanent;
+    if (det > bound) return Sign::Positive;
+    if (-det > bound) return Sign::Negative;
+  } else if (permanent == 0) {
+    return Sign::Zero;
+  }
+  return detail::orient2d_after_filter(a, b, c);
+}
 
 // Positive when det(b - a, c - a, d - a) > 0: d lies on the side of triangle
 // abc that its right-hand normal points to (positive tetrahedron volume).
@@ -41,16 +86,46 @@ Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 Sign orient2d_projected(Vec3 a, Vec3 b, Vec3 c, int drop);
 
 // Positive when d lies strictly inside the circle through a, b, c, which must
-// be counter-clockwise (the sign flips for a clockwise triangle).
-Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+// be counter-clockwise (the sign flips for a clockwise triangle). Inline
+// double filter as for orient2d, error bound 32 eps times the permanent.
+inline Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdx * cdy - bdy * cdx) + blift * (cdx * ady - cdy * adx) + clift * (adx * bdy - ady * bdx);
+  const double permanent = alift * (std::abs(bdx * cdy) + std::abs(bdy * cdx)) +
+                           blift * (std::abs(cdx * ady) + std::abs(cdy * adx)) +
+                           clift * (std::abs(adx * bdy) + std::abs(ady * bdx));
+  if (permanent > detail::kTinyPermanent) {
+    const double bound = 32 * detail::kPredicateEps * permanent;
+    if (det > bound) return Sign::Positive;
+    if (-det > bound) return Sign::Negative;
+  } else if (permanent == 0) {
+    return Sign::Zero;
+  }
+  return detail::incircle_after_filter(a, b, c, d);
+}
 
 // Positive when e lies strictly inside the sphere through a, b, c, d, which
 // must have orient3d(a, b, c, d) > 0 (the sign flips otherwise).
 Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e);
 
 // Sign of the dot product (b - a) . (c - a): Positive when the angle bac is
-// acute, Zero when right, Negative when obtuse.
-Sign dot_sign(Vec2 a, Vec2 b, Vec2 c);
+// acute, Zero when right, Negative when obtuse. Inline double filter (error
+// bound 8 eps times the permanent), then GMP.
+inline Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+  const double l = ux * vx, r = uy * vy;
+  const double det = l + r, permanent = std::abs(l) + std::abs(r);
+  if (permanent > detail::kTinyPermanent) {
+    const double bound = 8 * detail::kPredicateEps * permanent;
+    if (det > bound) return Sign::Positive;
+    if (-det > bound) return Sign::Negative;
+  } else if (permanent == 0) {
+    return Sign::Zero;
+  }
+  return detail::dot_sign_after_filter(a, b, c);
+}
 Sign dot_sign(Vec3 a, Vec3 b, Vec3 c);
 
 // Sign of (b - a) . (d - c) for two independent directions.

@@ -5,6 +5,7 @@
 
 #include "pqmesh/mesh.hpp"
 #include "pqmesh/quality.hpp"
+#include "quality/triangle_quality_memo.hpp"
 
 namespace pqmesh::detail {
 
@@ -18,6 +19,16 @@ inline TriQuality quality_of_element(const TriMesh2& mesh, std::size_t e) {
     if (v < 0 || static_cast<std::size_t>(v) >= n) throw_bad_vertex_index(e, v, n, "triangle");
   }
   return triangle_quality(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+}
+
+// The same through a shape memo (the same numbers; faster over a whole mesh).
+inline TriQuality quality_of_element(const TriMesh2& mesh, std::size_t e, TriangleQualityMemo& memo) {
+  const auto& t = mesh.triangles[e];
+  const std::size_t n = mesh.vertices.size();
+  for (int v : t) {
+    if (v < 0 || static_cast<std::size_t>(v) >= n) throw_bad_vertex_index(e, v, n, "triangle");
+  }
+  return memo(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
 }
 
 inline TetQuality quality_of_element(const TetMesh3& mesh, std::size_t e) {

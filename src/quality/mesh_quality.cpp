@@ -11,7 +11,8 @@ namespace pqmesh {
 std::vector<TriQuality> element_quality(const TriMesh2& mesh) {
   std::vector<TriQuality> out;
   out.reserve(mesh.triangles.size());
-  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) out.push_back(detail::quality_of_element(mesh, e));
+  TriangleQualityMemo memo;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) out.push_back(detail::quality_of_element(mesh, e, memo));
   return out;
 }
 

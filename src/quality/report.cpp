@@ -141,7 +141,8 @@ QualityReport quality_report(std::span<const TetQuality> elements) {
 
 QualityReport quality_report(const TriMesh2& mesh) {
   ReportBuilder<TriQuality> b(2);
-  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) b.add(detail::quality_of_element(mesh, e));
+  TriangleQualityMemo memo;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) b.add(detail::quality_of_element(mesh, e, memo));
   return b.finish();
 }
 

@@ -49,6 +49,57 @@ double tri_enclosing_radius(Vec2 a, Vec2 b, Vec2 c, double circum) {
   return circum;
 }
 
+// The smallest and largest of the three angles angle_between(b - a, c - a),
+// angle_between(c - b, a - b), angle_between(a - c, b - c), as the same
+// doubles std::min / std::max of all three would give, with fewer atan2 calls
+// (the quality fields evaluate this for every triangle of a mesh):
+//   * two angles whose atan2 arguments are the same doubles have the same
+//     value (a right isosceles half-square: its two 45 degree angles);
+//   * the angle opposite the middle edge is skipped when the three squared
+//     edge lengths (opposite_a = |bc|^2, ...) differ pairwise by a factor of
+//     at least 1 + 2^-20: the exact angles are then ordered as the edges
+//     (law of sines) with relative gaps far above the few-ulp error of the
+//     computed ones, so the middle value is neither the minimum nor the
+//     maximum. (A measurement, not a decision: should rounding ever reorder
+//     such angles, the reported extreme moves by that rounding only.)
+struct MinMax {
+  double min, max;
+};
+
+MinMax min_max_angle(Vec2 a, Vec2 b, Vec2 c, double opposite_a, double opposite_b, double opposite_c) {
+  const Vec2 u[3] = {b - a, c - b, a - c}, w[3] = {c - a, a - b, b - c};
+  double y[3], x[3];
+  for (int i = 0; i < 3; ++i) {
+    y[i] = std::abs(cross(u[i], w[i]));  // angle_between's atan2 arguments
+    x[i] = dot(u[i], w[i]);
+  }
+  const double len2[3] = {opposite_a, opposite_b, opposite_c};
+  int lo = 0, hi = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (len2[i] < len2[lo]) lo = i;
+    if (len2[i] >= len2[hi]) hi = i;
+  }
+  if (lo == hi) hi = (lo + 1) % 3;  // all three equal: any two, the third is not skipped below
+  const int mid = 3 - lo - hi;
+  constexpr double kGap = 1 + 0x1p-20;
+  double value[3] = {0, 0, 0};
+  bool known[3] = {false, false, false};
+  const auto angle = [&](int i) {
+    if (known[i]) return value[i];
+    for (int j = 0; j < 3; ++j)
+      if (known[j] && y[j] == y[i] && x[j] == x[i]) {
+        known[i] = true;
+        return value[i] = value[j];
+      }
+    known[i] = true;
+    return value[i] = std::atan2(y[i], x[i]);
+  };
+  const double v_lo = angle(lo), v_hi = angle(hi);
+  if (len2[lo] * kGap <= len2[mid] && len2[mid] * kGap <= len2[hi]) return {std::min(v_lo, v_hi), std::max(v_lo, v_hi)};
+  const double v_mid = angle(mid);
+  return {std::min({v_lo, v_mid, v_hi}), std::max({v_lo, v_mid, v_hi})};
+}
+
 // ---- tetrahedra ----
 
 // Containment test for the face-circumcircle candidate balls of the minimal
@@ -162,11 +213,9 @@ TriQuality triangle_quality(Vec2 a, Vec2 b, Vec2 c) {
     q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
     return q;
   }
-  const double angle_a = angle_between(b - a, c - a);
-  const double angle_b = angle_between(c - b, a - b);
-  const double angle_c = angle_between(a - c, b - c);
-  q.min_angle_deg = std::min({angle_a, angle_b, angle_c}) * kDeg;
-  q.max_angle_deg = std::max({angle_a, angle_b, angle_c}) * kDeg;
+  const MinMax angles = min_max_angle(a, b, c, lbc * lbc, lca * lca, lab * lab);
+  q.min_angle_deg = angles.min * kDeg;
+  q.max_angle_deg = angles.max * kDeg;
   const double area = std::abs(q.area);
   // A nonzero exact orientation means at least two distinct points, so s > 0
   // and R > 0; a double area that underflowed to 0 yields +infinity, not NaN.
