@@ -3,17 +3,23 @@
 // the first class of violation it finds.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
+#include "plc/merge_coplanar.hpp"
 #include "plc/report_error.hpp"
 #include "plc/validate3.hpp"
 #include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
 
 namespace pqmesh {
 
 using namespace detail;
 
-Domain3 make_domain(Plc3 plc) {
+namespace {
+
+// Stages 1-10 on the facets as given.
+Domain3 build_domain(Plc3 plc) {
   check_basic(plc);                                   // stage 1
   check_duplicate_vertices(plc);                      // stage 2
   const std::vector<FacetPlane> planes = check_facets(plc);  // stages 3-5
@@ -86,6 +92,24 @@ Domain3 make_domain(Plc3 plc) {
     }
   }
   return d;
+}
+
+}  // namespace
+
+// Stage 11 (merge_coplanar.hpp): coplanar neighbours with equal markers become
+// one facet, and the merged PLC is validated afresh. Merging keeps every
+// vertex on a loop and builds loops that neither touch nor cross (the groups
+// where it could not are left alone), so the second pass cannot fail on a
+// valid first pass: if it does, that is a bug in the merge.
+Domain3 make_domain(Plc3 plc) {
+  Domain3 d = build_domain(std::move(plc));
+  std::optional<CoplanarMerge> merged = merge_coplanar_facets(d);
+  if (!merged) return d;
+  try {
+    return build_domain(std::move(merged->plc));
+  } catch (const DomainError& e) {
+    throw InternalError(std::string("merging coplanar facets made the domain invalid: ") + e.what());
+  }
 }
 
 // Linear scan over the facet triangles (no index is stored in Domain3); for

@@ -173,14 +173,15 @@ TEST(Domain3, HolePointInCavityAccepted) {
 }
 
 TEST(Domain3, CoplanarAdjacentFacetsAndCollinearVertices) {
-  // [0,2]^3 with the top face split at x = 1 into two coplanar facets; the
+  // [0,2]^3 with the top face split at x = 1 into two coplanar facets with
+  // different markers (so they stay two facets, merge_coplanar_test.cpp); the
   // front and back faces gain the split points (1,0,2), (1,2,2) as collinear
   // vertices (pentagons).
   Plc3 plc = box({0, 0, 0}, {2, 2, 2});
   plc.vertices.push_back({1, 0, 2});  // 8
   plc.vertices.push_back({1, 2, 2});  // 9
   plc.facets[1].loops[0] = {4, 8, 9, 6};
-  plc.facets.push_back(Facet3{{{8, 5, 7, 9}}, 0});  // facet 6
+  plc.facets.push_back(Facet3{{{8, 5, 7, 9}}, 1});  // facet 6
   plc.facets[2].loops[0] = {0, 1, 5, 8, 4};
   plc.facets[3].loops[0] = {2, 6, 9, 7, 3};
   const Domain3 d = make_domain(plc);

@@ -85,6 +85,30 @@ inline Plc3 block_with_through_hole() {
   return plc;
 }
 
+// The same solid with each cap given as four trapezoids (as in
+// data/3d/cube_through_hole.poly), trapezoid k between outer side k -> k+1
+// and the hole side below it. Facets: 0-3 bottom trapezoids (markers
+// bottom[k]), 4-7 top trapezoids (markers top[k]), 8-11 outer walls, 12-15
+// hole walls (marker `walls`). Vertex ids as in block_with_through_hole.
+inline Plc3 block_with_through_hole_in_pieces(std::array<int, 4> bottom, std::array<int, 4> top, int walls = 0) {
+  Plc3 plc = block_with_through_hole();
+  std::vector<Facet3> walls_list(plc.facets.begin() + 2, plc.facets.end());
+  plc.facets.clear();
+  for (int k = 0; k < 4; ++k) {
+    const int k1 = (k + 1) % 4;
+    plc.facets.push_back(Facet3{{{4 + k, 4 + k1, k1, k}}, bottom[static_cast<std::size_t>(k)]});
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int k1 = (k + 1) % 4;
+    plc.facets.push_back(Facet3{{{8 + k, 8 + k1, 12 + k1, 12 + k}}, top[static_cast<std::size_t>(k)]});
+  }
+  for (Facet3 f : walls_list) {
+    f.marker = walls;
+    plc.facets.push_back(f);
+  }
+  return plc;
+}
+
 // Regular octahedron |x| + |y| + |z| <= r.
 inline Plc3 octahedron(double r = 1) {
   Plc3 plc;

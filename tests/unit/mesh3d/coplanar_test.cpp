@@ -1,0 +1,117 @@
+// Inputs whose facets are not maximal (ALGORITHM.md, coplanar facets): a
+// straight edge of P with a vertex in its middle (data/3d/cube.obj), a cap
+// given as coplanar pieces with one marker (merged by make_domain,
+// plc/merge_coplanar.hpp), and a flat edge between different markers
+// (refused as unsupported input, never an internal error). Every mesh is
+// checked whole (check_mesh) and its boundary markers are checked against
+// the facet planes, as in generic_corpus_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+#include <string>
+
+#include "../plc/domain_fixtures.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
+#include "pqmesh/read_domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "predicates/predicates.hpp"
+#include "support/paths.hpp"
+
+namespace pqmesh {
+namespace {
+
+// Three non-collinear vertices of facet f's outer loop (exact test).
+bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {
+  const auto& loop = d.plc.facets[f].loops[0];
+  const auto& P = d.plc.vertices;
+  for (std::size_t k = 2; k < loop.size(); ++k) {
+    a = P[loop[0]], b = P[loop[1]], c = P[loop[k]];
+    if (orient2d_projected(a, b, c, 0) != Sign::Zero || orient2d_projected(a, b, c, 1) != Sign::Zero ||
+        orient2d_projected(a, b, c, 2) != Sign::Zero)
+      return true;
+  }
+  return false;
+}
+
+// Meshes, checks, and checks every boundary triangle's marker: some facet
+// with that marker has a plane through the ulp boxes of its three vertices.
+TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
+  const TetMeshResult r = tet_mesh(d);
+  const CheckReport c = check_mesh(r.mesh, d);
+  EXPECT_TRUE(c.valid()) << what << "\n" << c.to_text();
+  EXPECT_EQ(r.mesh.face_markers.size(), r.mesh.faces.size());
+  std::set<int> used, input;
+  for (const Facet3& f : d.plc.facets) input.insert(f.marker);
+  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
+    const int m = r.mesh.face_markers[i];
+    used.insert(m);
+    bool on_some = false;
+    for (std::size_t f = 0; f < d.plc.facets.size() && !on_some; ++f) {
+      Vec3 a, b, e;
+      if (d.plc.facets[f].marker != m || !facet_plane(d, f, a, b, e)) continue;
+      bool all = true;
+      for (const int v : r.mesh.faces[i]) all = all && within_ulp_of_plane(r.mesh.vertices[v], a, b, e);
+      on_some = all;
+    }
+    EXPECT_TRUE(on_some) << what << ": boundary triangle " << i << " (marker " << m
+                         << ") is not within an ulp of a facet with that marker";
+    if (!on_some) break;
+  }
+  EXPECT_EQ(used, input) << what;
+  std::printf("%-28s %zu tets, %zu vertices\n", what.c_str(), r.mesh.tetrahedra.size(), r.mesh.vertices.size());
+  return r;
+}
+
+bool has_vertex(const TetMesh3& m, Vec3 p) {
+  for (const Vec3& q : m.vertices)
+    if (q.x == p.x && q.y == p.y && q.z == p.z) return true;
+  return false;
+}
+
+TEST(Coplanar, CubeObjKeepsTheVerticesInItsStraightEdges) {
+  // (1, 0, 2) splits the edge between the top and front facets, (2, 1, 2)
+  // the one between top and right: two facets sharing two collinear edges.
+  const Domain3 d = make_domain(read_plc(test::data_path("3d/cube.obj")));
+  ASSERT_EQ(d.plc.facets.size(), 6u);
+  const TetMeshResult r = mesh_and_check("cube.obj", d);
+  EXPECT_TRUE(has_vertex(r.mesh, {1, 0, 2}));
+  EXPECT_TRUE(has_vertex(r.mesh, {2, 1, 2}));
+}
+
+TEST(Coplanar, CapsInPiecesMeshLikeTheWholeCaps) {
+  // make_domain merges each cap's four trapezoids into the annulus of
+  // block_with_through_hole(), with the facets in the same order and the
+  // same loops (merge_coplanar_test.cpp): the same domain, so the
+  // (deterministic) mesher must give the same mesh.
+  const Domain3 pieces = make_domain(test::block_with_through_hole_in_pieces({1, 1, 1, 1}, {2, 2, 2, 2}, 3));
+  ASSERT_EQ(pieces.plc.facets.size(), 10u);
+  const TetMeshResult a = mesh_and_check("caps in pieces", pieces);
+  Plc3 whole_plc = test::block_with_through_hole();
+  whole_plc.facets[0].marker = 1;
+  whole_plc.facets[1].marker = 2;
+  for (std::size_t f = 2; f < whole_plc.facets.size(); ++f) whole_plc.facets[f].marker = 3;
+  const TetMeshResult b = tet_mesh(make_domain(whole_plc));
+  EXPECT_EQ(a.mesh.tetrahedra.size(), b.mesh.tetrahedra.size());
+  EXPECT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+}
+
+TEST(Coplanar, AFlatEdgeBetweenMarkersIsRefusedByName) {
+  // Bottom markers 1 1 2 2: the flat diagonals (0, 4) and (2, 6) stay edges
+  // of P between the merged halves (facets 0 and 1).
+  const Domain3 d = make_domain(test::block_with_through_hole_in_pieces({1, 1, 2, 2}, {5, 5, 5, 5}));
+  try {
+    tet_mesh(d);
+    FAIL() << "no DomainError";
+  } catch (const DomainError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("edge (0, 4) between facets 0 and 1 is flat"), std::string::npos) << what;
+    EXPECT_EQ(e.ids(), (std::vector<std::int64_t>{0, 4}));
+  }
+}
+
+}  // namespace
+}  // namespace pqmesh
