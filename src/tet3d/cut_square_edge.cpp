@@ -4,7 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "plc/report_error.hpp"
 #include "pqmesh/errors.hpp"
+#include "tet3d/warped_crossing.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -67,6 +69,20 @@ EdgeCone::EdgeCone(const Domain3& domain, int edge)
   const Vec3 wf = wing(domain, f_.facet(), e.a, e.b), wg = wing(domain, g_.facet(), e.a, e.b);
   // Convex iff G leaves E towards P's side of F (and then F towards G's).
   const Sign fg = f_.side(wg), gf = g_.side(wf);
+  // A flat edge (coplanar facets that make_domain did not merge): no wedge.
+  // Normally refused up front by SquareDispatcher::refuse_flat_edges with the
+  // reason; here too as the same user error, whoever asks first.
+  if (fg == Sign::Zero && gf == Sign::Zero) {
+    const SourceInfo& src = domain.plc.source;
+    pqmesh::detail::throw_domain_error(
+        src, ErrorCode::Unsupported,
+        "edge (" + std::to_string(pqmesh::detail::file_id(src, e.a)) + ", " +
+            std::to_string(pqmesh::detail::file_id(src, e.b)) + ") between facets " +
+            std::to_string(pqmesh::detail::file_id(src, f_.facet())) + " and " +
+            std::to_string(pqmesh::detail::file_id(src, g_.facet())) +
+            " is flat (coplanar facets); the tetrahedral mesher does not support flat edges",
+        {e.a, e.b}, pqmesh::detail::IdKind::Vertex);
+  }
   if (fg == Sign::Zero || gf == Sign::Zero || fg != gf)
     throw InternalError("tet3d: edge " + std::to_string(edge) + " is flat or its facets are inconsistently oriented");
   convex_ = fg == Sign::Negative;
@@ -249,6 +265,8 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       coord(p, s.u) = bracket(s.u);
       coord(p, s.v) = bracket(s.v);
       if (!within_ulp_of_segment(p, ea, eb)) throw InternalError(where + ": edge crossing not within an ulp of the edge");
+      // After the first warping pass, E crosses the tilted square (§12.5).
+      if (const auto w = warped_square_crossing(ea, eb, s, tree, warps)) return *w;
       return p;
     });
     for (std::size_t i = runs[0].first; i != runs[0].second; i = (i + 1) % m) {

@@ -7,7 +7,9 @@
 //   convex edge: P = (P's side of F) ∩ (P's side of G),
 //   reflex edge: P = (P's side of F) ∪ (P's side of G).
 // Convexity is exact: the third vertex w_G of a facet triangle of G on E lies
-// on P's side of F iff the edge is convex (orient3d; zero = flat: throws).
+// on P's side of F iff the edge is convex (orient3d). Zero means a flat edge
+// (coplanar facets that make_domain did not merge, plc/merge_coplanar.hpp):
+// DomainError (Unsupported) naming the edge's vertices and the facets.
 // A point p is classified by its two exact signs s_F, s_G: status(p) =
 // max(s_F, s_G) for a convex edge, min(s_F, s_G) for a reflex one
 // (Negative: inside P, Zero: on dP, Positive: outside). π = S ∩ P.

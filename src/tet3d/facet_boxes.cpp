@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 #include <array>
+#include <initializer_list>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -73,7 +74,9 @@ int dominant_axis(Vec3 n) {
 class Assembler {
  public:
   Assembler(const OctTree& tree, const CornerSet& corners, const Domain3& domain, const WarpTable* warps)
-      : tree_(tree), corners_(corners), domain_(domain), warps_(warps) {}
+      : tree_(tree), corners_(corners), domain_(domain), warps_(warps) {
+    book_.set_warps(warps);
+  }
 
   void empty_box(std::int32_t leaf) {
     const BoxKey<3>& key = tree_.key(leaf);
@@ -127,9 +130,20 @@ class Assembler {
     const Vec3 lo = grid_coordinates(tree_, key_corner(key, 0)), hi = grid_coordinates(tree_, key_corner(key, 7));
     const auto [t0, t1] = clip_segment(a, b, lo, hi);
     if (!(t0 < t1)) throw InternalError("tet3d: edge " + std::to_string(edge) + " misses edge box " + std::to_string(leaf));
+    // §4.5.3: the midpoint of E ∩ I(b), I(b) the warped box: E enters and
+    // leaves it at its two Case B vertices on b's faces (E is convex-clipped
+    // by the cube; no P vertex in an edge box), wherever they were put
+    // (warped_crossing.hpp); the midpoint of the clip when they are not two.
+    std::vector<int> ends;
+    for (const Tri& t : tris)
+      for (const int id : t)
+        if (book_.key(id).kind == VertexKind::EdgeCrossing && book_.key(id).facet == edge &&
+            std::find(ends.begin(), ends.end(), id) == ends.end())
+          ends.push_back(id);
     const double tm = 0.5 * (t0 + t1);
+    const Vec3 mid = ends.size() == 2 ? 0.5 * (book_.point(ends[0]) + book_.point(ends[1])) : a + tm * (b - a);
     const VertexKey vk{VertexKind::EdgeMidpoint, key_centre(key), {}, edge};
-    const int v = book_.id(vk, [&] { return round_onto_segment(a, b, a + tm * (b - a)); });
+    const int v = book_.id(vk, [&] { return round_onto_segment(a, b, mid); });
     for (const Tri& t : tris) cone(leaf, t, v);
     ++out_.stats.edge;
   }
@@ -255,7 +269,10 @@ class Assembler {
     ++out_.stats.two_facet;
   }
 
-  void set_job(std::size_t j) { job_ = static_cast<std::int32_t>(j); }
+  void set_job(std::size_t j, const BoxJob& job) {
+    job_ = static_cast<std::int32_t>(j);
+    job_box_ = job;
+  }
   void collect_bad() { collect_ = true; }
   const std::vector<GridPoint>& bad() const { return bad_; }
 
@@ -359,13 +376,7 @@ class Assembler {
       // A warp bent a face past the apex: the moved grid points this
       // tetrahedron depends on are reported, frozen and the mesh rebuilt
       // (mesh_boxes); none found: a bug, thrown below.
-      std::size_t before = bad_.size();
-      for (const int v : {a, b, c, d}) {
-        const VertexKey& k = book_.key(v);
-        for (const GridPoint& g : {k.p, k.q})
-          if (warps_->find(g) != nullptr) bad_.push_back(g);
-      }
-      if (bad_.size() > before) return;
+      if (report_moved({a, b, c, d})) return;
     }
     if (s != Sign::Positive)
       throw InternalError(std::string("tet3d: ") + what + " tetrahedron of leaf " + std::to_string(leaf) + " is " +
@@ -373,6 +384,37 @@ class Assembler {
     out_.mesh.tetrahedra.push_back({a, b, c, d});
     out_.tet_leaf.push_back(leaf);
     out_.tet_job.push_back(job_);
+  }
+
+  // The moved grid points the vertices depend on, appended to bad_: those
+  // their keys name (a warped box vertex or square centre, the ends of a
+  // crossed ring segment, a clipped ring point); for a point constructed on
+  // a square (chord midpoint, projections, Case B crossing: keyed by the
+  // square's centre only) the moved ring points of that square of the job's
+  // box; if still none (points constructed from the whole box: facet
+  // polygon centres), every moved ring point of the job's box. Returns
+  // whether any was found.
+  bool report_moved(std::initializer_list<int> vertices) {
+    const std::size_t before = bad_.size();
+    std::vector<FaceSquare> squares;
+    job_squares(tree_, corners_, job_box_, squares);
+    auto report_square = [&](const FaceSquare& sq) {
+      for (const GridPoint& g : square_ring(sq, corners_))
+        if (warps_->find(g) != nullptr) bad_.push_back(g);
+    };
+    for (const int v : vertices) {
+      const VertexKey& k = book_.key(v);
+      for (const GridPoint& g : {k.p, k.q})
+        if (warps_->find(g) != nullptr) bad_.push_back(g);
+      if (k.kind == VertexKind::Grid || k.kind == VertexKind::Warped || k.kind == VertexKind::PVertex ||
+          k.kind == VertexKind::EdgeMidpoint)
+        continue;
+      for (const FaceSquare& sq : squares)
+        if (sq.centre() == k.p) report_square(sq);
+    }
+    if (bad_.size() == before)
+      for (const FaceSquare& sq : squares) report_square(sq);
+    return bad_.size() > before;
   }
 
   // The cone from an apex inside the box over a face triangle with outward
@@ -456,6 +498,7 @@ class Assembler {
   const Domain3& domain_;
   const WarpTable* warps_;
   std::int32_t job_ = -1;
+  BoxJob job_box_;
   bool collect_ = false;
   std::vector<GridPoint> bad_;  // moved grid points of inverted tetrahedra (collect_ mode)
   PointBook book_;
@@ -470,7 +513,7 @@ namespace {
 void run_jobs(Assembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
   for (std::size_t ji = 0; ji < jobs.size(); ++ji) {
     const BoxJob& j = jobs[ji];
-    a.set_job(ji);
+    a.set_job(ji, j);
     if (!tree.is_leaf(j.leaf)) throw InternalError("tet3d: node " + std::to_string(j.leaf) + " is not a leaf");
     switch (j.kind) {
       case BoxKind::FromFacet:
@@ -500,7 +543,8 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     PointBook scratch;
     const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
     std::vector<WarpCandidate> candidates;
-    std::unordered_map<GridPoint, std::size_t, GridPointHash> index;
+    std::unordered_map<GridPoint, std::size_t, GridPointHash> index, centre_index;
+    std::vector<WarpCandidate> centres;
     std::vector<FaceSquare> squares;
     for (const BoxJob& j : jobs) {
       squares.clear();
@@ -508,11 +552,27 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
       const BoxFaces faces = job_faces(faces_only, j);
       const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
       for (const FaceSquare& s : squares) {
+        // The square's centre, carried with its four corners (warp.hpp).
+        // A final square's centre is no leaf corner (box_faces.hpp), so never
+        // a ring point.
+        const auto [cit, cfresh] = centre_index.try_emplace(s.centre(), centres.size());
+        if (cfresh) {
+          GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
+          c1.f[static_cast<std::size_t>(s.u)] += s.side;
+          c2.f[static_cast<std::size_t>(s.u)] += s.side;
+          c2.f[static_cast<std::size_t>(s.v)] += s.side;
+          c3.f[static_cast<std::size_t>(s.v)] += s.side;
+          centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1});
+        }
+        for (const int f : faces.facets) {
+          std::vector<int>& cf = centres[cit->second].facets;
+          if (std::find(cf.begin(), cf.end(), f) == cf.end()) cf.push_back(f);
+        }
         const std::vector<GridPoint> ring = square_ring(s, corners);
         for (std::size_t i = 0; i < ring.size(); ++i) {
           const GridPoint& p = ring[i];
           const auto [it, fresh] = index.try_emplace(p, candidates.size());
-          if (fresh) candidates.push_back({p, {}, {}});
+          if (fresh) candidates.push_back({p, {}, {}, {}, -1});
           WarpCandidate& c = candidates[it->second];
           c.level = std::max(c.level, level);
           for (const int f : faces.facets)
@@ -521,6 +581,10 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
             if (std::find(c.neighbours.begin(), c.neighbours.end(), q) == c.neighbours.end()) c.neighbours.push_back(q);
         }
       }
+    }
+    for (WarpCandidate& c : centres) {
+      if (index.count(c.p) != 0) throw InternalError("tet3d: a square centre is a ring point");
+      candidates.push_back(std::move(c));
     }
     warps = warp_box_vertices(tree, corners, domain, candidates);
     // A warp may bend a box face past a cone apex near it (an apex on a P
@@ -554,6 +618,8 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   out.warp_first_pass = warps.first_pass;
   out.warp_rebuilds = rebuilds;
   out.warp_parallel_left = warps.parallel_left;
+  out.warp_parallel = warps.parallel;
+  out.warp_centres = warps.centres;
   return out;
 }
 

@@ -6,8 +6,10 @@
 // square dispatcher (square_cases.hpp), so all kinds share one triangulation
 // of every square.
 //
-// Edge box b (edge E, facets F, G): v = the midpoint of E ∩ b (constructed,
-// rounded within an ulp of E, edge_point.hpp), coned to every π-triangle of
+// Edge box b (edge E, facets F, G): v = the midpoint of E ∩ I(b), i.e. of the
+// box's two Case B vertices where E enters and leaves it (wherever the square
+// code put them, warped_crossing.hpp; the midpoint of E ∩ the prewarped cube
+// if they are not two), rounded within an ulp of E (edge_point.hpp), coned to every π-triangle of
 // b's faces. P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in
 // the open cube, so the cones tile it; their faces through v on F and G are
 // the boundary triangles there.
@@ -96,6 +98,8 @@ struct BoxMesh {
   // First pass (box edges near P edges): vertices moved by it (among
   // `warped`), and first-pass moves not made (box edge parallel to E).
   std::int64_t warp_first_pass = 0, warp_parallel_left = 0;
+  std::int64_t warp_parallel = 0;  // first-pass moves of box-edge pieces parallel to E
+  std::int64_t warp_centres = 0;   // square centres carried with their corners (among `warped`)
   std::int64_t warp_rebuilds = 0;  // warp tables rebuilt after freezing points of inverted tetrahedra
 };
 

@@ -80,7 +80,11 @@ Vec3 FacetPlane::crossing(Vec3 p, Vec3 q) const {
     const double pa = at(p, a), qa = at(q, a);
     if (pa == qa) continue;  // kept exactly: the point stays on the segment's fixed planes
     at(x, a) = pa + t * (qa - pa);
-    const double w = std::fabs(qa - pa);
+    // The axis along which the plane's crossing is best conditioned: for a
+    // box edge the only one that varies; for a warped ring segment (all
+    // three may vary) the one with the largest |Δ_a n_a|, never an axis
+    // parallel to the plane (settle needs n_a != 0).
+    const double w = std::fabs((qa - pa) * at(n_, a));
     if (w > best) {
       best = w;
       free_axis = a;

@@ -3,11 +3,16 @@
 // its id (order of first use, deterministic) and its coordinates; later
 // requests with the same key return the same id whatever coordinates they
 // pass, so every box that uses a vertex sees one rounding of it.
+// With a warp table (set_warps), a Grid key of a grid point the table moved
+// names its moved copy, key (Warped, p, F) and the table's coordinates,
+// whichever call site asks (grid_vertex in warp.hpp does the same): a square
+// centre carried with its corners (warp.hpp) is one vertex on both sides.
 #include <unordered_map>
 #include <vector>
 
 #include "pqmesh/vec.hpp"
 #include "tet3d/vertex_key.hpp"
+#include "tet3d/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -15,14 +20,12 @@ class PointBook {
  public:
   template <class MakeCoordinates>
   int id(const VertexKey& key, MakeCoordinates&& make) {
-    const auto it = ids_.find(key);
-    if (it != ids_.end()) return it->second;
-    const int n = static_cast<int>(keys_.size());
-    ids_.emplace(key, n);
-    keys_.push_back(key);
-    points_.push_back(make());
-    return n;
+    if (warps_ != nullptr && key.kind == VertexKind::Grid)
+      if (const Warp* w = warps_->find(key.p)) return add({VertexKind::Warped, key.p, {}, w->facet}, [&] { return w->at; });
+    return add(key, make);
   }
+  // The table grid keys resolve through (may be null: none).
+  void set_warps(const WarpTable* warps) { warps_ = warps; }
   int find(const VertexKey& key) const {
     const auto it = ids_.find(key);
     return it == ids_.end() ? -1 : it->second;
@@ -33,6 +36,18 @@ class PointBook {
   const std::vector<Vec3>& points() const { return points_; }
 
  private:
+  template <class MakeCoordinates>
+  int add(const VertexKey& key, MakeCoordinates&& make) {
+    const auto it = ids_.find(key);
+    if (it != ids_.end()) return it->second;
+    const int n = static_cast<int>(keys_.size());
+    ids_.emplace(key, n);
+    keys_.push_back(key);
+    points_.push_back(make());
+    return n;
+  }
+
+  const WarpTable* warps_ = nullptr;
   std::unordered_map<VertexKey, int, VertexKeyHash> ids_;
   std::vector<VertexKey> keys_;
   std::vector<Vec3> points_;

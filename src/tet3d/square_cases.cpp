@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "plc/edge_topology.hpp"
+#include "plc/report_error.hpp"
 #include "pqmesh/errors.hpp"
 #include "tet3d/square_meets.hpp"
 
@@ -42,6 +44,72 @@ SquareDispatcher::SquareDispatcher(const OctTree& tree, const CornerSet& corners
   for (auto& list : vertex_facets_) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  refuse_flat_edges();
+  check_collinear_edges();
+}
+
+// An edge is flat when the third vertex of a facet triangle of G on it lies
+// on F's plane (exact orient3d): then G lies in F's plane, and as make_domain
+// oriented both outward and no two facets overlap, the dihedral angle is
+// 180°. make_domain merges such facets when their markers agree
+// (plc/merge_coplanar.hpp); what is left is refused here as a user error
+// naming the facets and the edge's vertices, in the file's numbering.
+void SquareDispatcher::refuse_flat_edges() {
+  std::vector<std::array<int, 2>> wing(domain_.edges.size(), {-1, -1});  // per edge: third vertex in facets[0], [1]
+  for (std::size_t t = 0; t < domain_.facet_triangles.size(); ++t) {
+    const auto& tri = domain_.facet_triangles[t];
+    const int owner = domain_.facet_triangle_owner[t];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const int e = pqmesh::detail::find_edge(domain_.edges, tri[k], tri[(k + 1) % 3]);
+      if (e < 0) continue;
+      const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+      const std::size_t side = de.facets[0] == owner ? 0 : (de.facets[1] == owner ? 1 : 2);
+      if (side < 2) wing[static_cast<std::size_t>(e)][side] = tri[(k + 2) % 3];
+    }
+  }
+  const SourceInfo& src = domain_.plc.source;
+  for (std::size_t e = 0; e < domain_.edges.size(); ++e) {
+    const DomainEdge& de = domain_.edges[e];
+    if (de.facets[0] < 0 || de.facets[1] < 0 || wing[e][1] < 0) continue;
+    if (plane(de.facets[0]).side(domain_.plc.vertices[static_cast<std::size_t>(wing[e][1])]) != Sign::Zero) continue;
+    const int mf = domain_.plc.facets[static_cast<std::size_t>(de.facets[0])].marker;
+    const int mg = domain_.plc.facets[static_cast<std::size_t>(de.facets[1])].marker;
+    const std::string why =
+        mf != mg ? "their markers differ (" + std::to_string(mf) + " and " + std::to_string(mg) + ")"
+                 : "merging them would leave a vertex inside one facet or make its boundary touch itself";
+    // Merged facets are renumbered (merge_coplanar.hpp) but keep a file
+    // line: name facets by line when the input came from a file.
+    const int lf = src.line_of_element(de.facets[0]), lg = src.line_of_element(de.facets[1]);
+    const std::string facets =
+        lf > 0 && lg > 0 ? "the facets at lines " + std::to_string(lf) + " and " + std::to_string(lg)
+                         : "facets " + std::to_string(pqmesh::detail::file_id(src, de.facets[0])) + " and " +
+                               std::to_string(pqmesh::detail::file_id(src, de.facets[1]));
+    pqmesh::detail::throw_domain_error(src, ErrorCode::Unsupported,
+                       "edge (" + std::to_string(pqmesh::detail::file_id(src, de.a)) + ", " +
+                           std::to_string(pqmesh::detail::file_id(src, de.b)) + ") between " + facets +
+                           " is flat (the facets are coplanar, a 180 degree dihedral angle) and the facets were "
+                           "not merged into one because " + why +
+                           "; the tetrahedral mesher does not support flat edges" +
+                           (mf != mg ? std::string(": give the facets the same marker to merge them")
+                                     : std::string(": split the face without a vertex inside it")),
+                       {de.a, de.b}, pqmesh::detail::IdKind::Vertex);
+  }
+}
+
+// Two facets in different planes share edges only on the line where the
+// planes meet; each such edge's wedge is bounded by the same two planes, and
+// its convexity (EdgeCone) is the side of F on which G leaves the line. Were
+// it to differ between two of them, the model of a square meeting F and G
+// away from both would be ambiguous.
+void SquareDispatcher::check_collinear_edges() {
+  for (const auto& [pair, list] : pair_edges_) {
+    if (list.size() < 2) continue;
+    for (const int e : list)
+      if (cone(e).convex() != cone(list[0]).convex())
+        throw InternalError("tet3d: facets " + std::to_string(pair.first) + " and " + std::to_string(pair.second) +
+                            " share convex and reflex edges (" + std::to_string(list[0]) + ", " + std::to_string(e) +
+                            ")");
   }
 }
 
@@ -89,10 +157,25 @@ const EdgeCone& SquareDispatcher::cone(int edge) {
 int SquareDispatcher::edge_of_facets(int f, int g) const {
   const auto it = pair_edges_.find({std::min(f, g), std::max(f, g)});
   if (it == pair_edges_.end()) return -1;
-  if (it->second.size() != 1)
-    throw InternalError("tet3d: facets " + std::to_string(f) + " and " + std::to_string(g) +
-                        " share several edges (the square dispatcher needs one)");
-  return it->second[0];
+  return it->second[0];  // the smallest id (edges are listed in increasing order)
+}
+
+int SquareDispatcher::edge_for_square(int f, int g, const SquareGeometry& geo) const {
+  const auto it = pair_edges_.find({std::min(f, g), std::max(f, g)});
+  if (it == pair_edges_.end()) return -1;
+  if (it->second.size() == 1) return it->second[0];
+  const auto& pv = domain_.plc.vertices;
+  int found = -1;
+  for (const int e : it->second) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+    if (!segment_meets_square(geo, pv[static_cast<std::size_t>(de.a)], pv[static_cast<std::size_t>(de.b)])) continue;
+    if (found >= 0)
+      throw InternalError("tet3d: collinear edges " + std::to_string(found) + " and " + std::to_string(e) +
+                          " of facets " + std::to_string(f) + " and " + std::to_string(g) +
+                          " both meet a square (their common vertex lies on it)");
+    found = e;
+  }
+  return found >= 0 ? found : it->second[0];
 }
 
 bool SquareDispatcher::facet_meets(int facet, const SquareGeometry& g) {
@@ -340,7 +423,7 @@ SquareCase SquareDispatcher::triangulate(const FaceSquare& s, const BoxFaces& fa
     triangulate_cut_square(s, corners_, tree_, plane(mf[0]), book_, out, warps_);
     result = SquareCase::C;
   } else {
-    const int e = edge_of_facets(mf[0], mf[1]);
+    const int e = edge_for_square(mf[0], mf[1], square_geometry(s, tree_));
     if (e < 0 || (!me.empty() && me[0] != e))
       throw InternalError("tet3d: two facets without a common edge: " + describe(s, faces, m));
     triangulate_edge_square(s, corners_, tree_, cone(e), book_, out, warps_);

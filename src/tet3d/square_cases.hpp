@@ -21,7 +21,14 @@
 //                                 in the box's model (below);
 //   M = {F}                       Case C (cut_square.hpp);
 //   M = {F, G} or {E, F, G},      Cases B / D (cut_square_edge.hpp) with the
-//     F, G the facets of edge E   cone of E; B iff E crosses S;
+//     F, G the facets of edge E   cone of E; B iff E crosses S. F and G may
+//                                 share several edges, all on the line where
+//                                 their planes meet (a P vertex in the middle
+//                                 of a straight edge, thesis §1.4 allows it):
+//                                 E is the one whose closed segment meets S
+//                                 (at most one: two would put their common P
+//                                 vertex on S), else any of them, which all
+//                                 give the same wedge (edge_for_square);
 //   anything else                 InternalError naming S and M (a P vertex in
 //                                 S, two facets without a common edge, two
 //                                 edges, ...: the octree's separation, §4.1.7,
@@ -113,8 +120,16 @@ class SquareDispatcher {
 
   const FacetPlane& plane(int facet);
   const EdgeCone& cone(int edge);
-  // The unique edge of Domain3::edges on both facets; -1 if none; throws if several.
+  // An edge of Domain3::edges on both facets, -1 if none: the unique one, or,
+  // when F and G share several (collinear: on the line where their planes
+  // meet), the smallest id. All of them then have the same local model (the
+  // same two planes and convexity, checked at construction; InternalError if
+  // not), so local_status() may use any.
   int edge_of_facets(int f, int g) const;
+  // The shared edge that triangulates square S: the one whose closed segment
+  // meets the closed (prewarped) square, else edge_of_facets(f, g).
+  // InternalError if two meet S (their common P vertex lies on S).
+  int edge_for_square(int f, int g, const SquareGeometry& geo) const;
   const std::vector<int>& vertex_edges(int v) const { return vertex_edges_[static_cast<std::size_t>(v)]; }
   const std::vector<int>& vertex_facets(int v) const { return vertex_facets_[static_cast<std::size_t>(v)]; }
   std::int64_t count(SquareCase c) const { return counts_[static_cast<std::size_t>(c)]; }
@@ -128,6 +143,11 @@ class SquareDispatcher {
   bool half_plane_meets(const EdgeCone& cone, int facet, const SquareGeometry& g);
   bool sector_meets(int vertex, int facet, const SquareGeometry& g);
   std::string describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const;
+  // Refuses (DomainError, Unsupported) an edge of P between coplanar facets:
+  // its cone is a half-space and Cases B/D have no wedge to work with.
+  void refuse_flat_edges();
+  // For each pair of facets sharing several edges: equal convexity.
+  void check_collinear_edges();
 
   const OctTree& tree_;
   const CornerSet& corners_;

@@ -103,7 +103,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
   };
   const auto& pv = domain.plc.vertices;
   for (const WarpCandidate& c : candidates) {
-    if (c.facets.empty()) continue;
+    if (c.facets.empty() || !c.square_corners.empty()) continue;
     const Vec3 x0 = grid_coordinates(tree, c.p);
     const std::int32_t level = std::max(c.level, corners.finest_level(c.p));
     if (level < 0) continue;
@@ -138,13 +138,23 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         Vec3 ax;
         (axis == 0 ? ax.x : axis == 1 ? ax.y : ax.z) = 1;
         Vec3 d = cross(eb - ea, ax);
-        const double len = norm(d);
-        if (!(len > 1e-9 * norm(eb - ea))) {
-          ++table.parallel_left;  // E parallel to the box edge: not done
-          continue;
+        double len = norm(d);
+        const bool parallel = !(len > 1e-9 * norm(eb - ea));
+        if (parallel) {
+          // E parallel to the box edge (a construction decides "parallel";
+          // either outcome is a valid move): along the common perpendicular,
+          // the closest-point difference without its component on the axis.
+          d = ps - pe;
+          (axis == 0 ? d.x : axis == 1 ? d.y : d.z) = 0;
+          len = norm(d);
+          if (!(len > 0)) {
+            ++table.parallel_left;  // E on the box edge's line: no direction
+            continue;
+          }
         }
         d = (1 / len) * d;
         if (dot(d, ps - pe) < 0) d = -1.0 * d;
+        table.parallel += parallel ? 1 : 0;
         x = x + (h / 8) * d;
         seen.push_back({axis, e});
       }
@@ -260,6 +270,40 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     table.bisected += bisect ? 1 : 0;
     table.first_pass += first && (same(chosen, y) || same(chosen, x)) ? 1 : 0;
   }
+  // Square centres, after every ring point: the mean of the corners' moves.
+  for (const WarpCandidate& c : candidates) {
+    if (c.square_corners.empty()) continue;
+    Vec3 move;
+    bool moved = false;
+    for (const GridPoint& q : c.square_corners)
+      if (const Warp* w = table.find(q)) {
+        move = move + (w->at - grid_coordinates(tree, q));
+        moved = true;
+      }
+    if (!moved) continue;
+    const Vec3 x0 = grid_coordinates(tree, c.p);
+    const Vec3 y = x0 + (1.0 / static_cast<double>(c.square_corners.size())) * move;
+    bool on_some = false, kept = true;
+    for (const int f : c.facets) {
+      const Sign s0 = plane_of(f).side(x0);
+      on_some = on_some || s0 == Sign::Zero;
+      kept = kept && plane_of(f).side(y) == s0;
+    }
+    if (on_some) {
+      ++table.on_plane;
+      continue;
+    }
+    if (!kept) {
+      ++table.conflicts;
+      continue;
+    }
+    if (frozen != nullptr && frozen->count(c.p) != 0) {
+      ++table.frozen_left;
+      continue;
+    }
+    table.insert(c.p, Warp{-1, y});
+    ++table.centres;
+  }
   return table;
 }
 
@@ -275,7 +319,7 @@ WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, con
     for (const FaceSquare& s : squares)
       for (const GridPoint& p : square_ring(s, corners)) {
         const auto [it, fresh] = index.try_emplace(p, candidates.size());
-        if (fresh) candidates.push_back({p, {}, {}});
+        if (fresh) candidates.push_back({p, {}, {}, {}, -1});
         std::vector<int>& fs = candidates[it->second].facets;
         if (std::find(fs.begin(), fs.end(), fb.facet) == fs.end()) fs.push_back(fb.facet);
       }

@@ -11,8 +11,10 @@
 // First pass: a ring segment [v, w] (a piece of a box edge: our box edges are
 // chains of split points) closer than h/8 to a P edge E between two facets of
 // the boxes using v moves h/8 orthogonally to E and to the segment, away from
-// E; moves of distinct (axis, E) pairs add up. E parallel to the box edge (the
-// thesis: move within F) is not done and counted (`parallel_left`).
+// E; moves of distinct (axis, E) pairs add up. E parallel to the box edge:
+// h/8 along the common perpendicular of the two lines, away from E (the
+// thesis: "orthogonal to E and coplanar with" the P edge; `parallel`); E on
+// the box edge's line has no such direction: left (`parallel_left`).
 // Second pass, from the first pass's position:
 //   * v exactly on the plane of a facet of a box using it (orient3d = 0, on
 //     the prewarped point) is not moved at all (an exact boundary point);
@@ -37,9 +39,21 @@
 // (`fallback`); else v stays (`conflicts`). The caller may freeze points
 // whose move inverted a tetrahedron (`frozen`, facet_boxes.cpp).
 //
+// Square centres (gap filled): the thesis keeps the centre c of a Case A
+// square at the prewarped face centre, but the first pass moves whole box
+// edges by h/8, so when every corner of a square moves alike (a face near a
+// P edge) the face becomes a tent with c h/8 inside it, and an edge-box apex
+// on E, also about h/8 from the prewarped face, lies nearly on a tent
+// triangle's plane (plate_holes: aspect 6,170). c is carried with its square:
+// moved by the mean of its four corners' moves (the centre of the bilinear
+// patch through the warped corners), after all ring points; accepted when it
+// keeps c's exact side of every facet of the boxes using the square (c on a
+// plane is not moved), so every decision about c stays the prewarped one.
+//
 // Consistency: every box resolves its grid points through the table
-// (grid_vertex), so all boxes sharing v see one moved copy, keyed
-// (Warped, v, F) (F = the first close facet, or -1).
+// (grid_vertex, and PointBook for any Grid key: square centres are asked for
+// by grid_key in the square code), so all boxes sharing v see one moved
+// copy, keyed (Warped, v, F) (F = the first close facet, or -1).
 #include <cstdint>
 #include <span>
 #include <unordered_map>
@@ -49,42 +63,19 @@
 #include "pqmesh/domain.hpp"
 #include "tet3d/box_faces.hpp"
 #include "tet3d/point_book.hpp"
+#include "tet3d/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 
-struct Warp {
-  int facet = -1;
-  Vec3 at;
-};
-
-class WarpTable {
- public:
-  const Warp* find(const GridPoint& p) const {
-    const auto it = map_.find(p);
-    return it == map_.end() ? nullptr : &it->second;
-  }
-  bool insert(const GridPoint& p, const Warp& w) { return map_.try_emplace(p, w).second; }
-  std::size_t size() const { return map_.size(); }
-  std::int64_t conflicts = 0;     // left: the move would change a side decision
-  std::int64_t bisected = 0;      // moved onto the bisector of an acute wedge (among size())
-  std::int64_t reflex_left = 0;   // left: close to both facets of a reflex edge (Fig. 4.7 copies not done)
-  std::int64_t crowded_left = 0;  // left: close to two facets outside P / without a common edge / to three
-  std::int64_t on_plane = 0;      // not moved: exactly on a facet plane
-  std::int64_t first_pass = 0;     // moved with a first-pass part (among size())
-  std::int64_t fallback = 0;       // moved by a fallback (first pass only / second only; among size())
-  std::int64_t parallel_left = 0;  // first-pass moves not made: box edge parallel to E
-  std::int64_t frozen_left = 0;   // left: in the caller's frozen set (their move inverted a tetrahedron)
-
- private:
-  std::unordered_map<GridPoint, Warp, GridPointHash> map_;
-};
-
 // A box vertex, the facets of the boxes using it and its neighbours along
 // the rings of the squares using it (no repeats).
+// Or the centre of a face square (Case A / C2 / D2 centre, §4.4), with the
+// square's four corners: it is carried with them (see above).
 struct WarpCandidate {
   GridPoint p;
   std::vector<int> facets;
   std::vector<GridPoint> neighbours;
+  std::vector<GridPoint> square_corners;  // non-empty: p is this square's centre
   // The deepest level of a box whose faces use p (a vertex job's united box
   // counts one level up); with CornerSet::finest_level it gives §4.3's h,
   // the smallest box containing p (a united box's ring point need not be a

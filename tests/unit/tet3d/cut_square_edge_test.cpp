@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "pqmesh/domain.hpp"
+#include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 #include "tet3d/cut_square_edge.hpp"
 
@@ -270,6 +271,33 @@ TEST(CutSquareEdge, ConeSignsByHand) {
     // And G's crossing of the segment from (-1, 2) to (1, 2), at (0, 2).
     EXPECT_EQ(cone.f_at_g_crossing({-1, 2, 0}, {1, 2, 0}), cone.f().side({0, 2, 0}));
     EXPECT_EQ(cone.g_at_f_crossing({-1, -1, 0}, {1, 1, 0}), Sign::Zero);  // through the edge
+  }
+}
+
+// The unit cube with its bottom split along the diagonal (0, 2) into two
+// triangles with different markers (so make_domain keeps them apart): the
+// edge (0, 2) is flat, which the cone refuses as unsupported input.
+TEST(CutSquareEdge, AFlatEdgeIsUnsupportedInput) {
+  Plc3 plc;
+  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const std::vector<std::vector<int>> loops = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (std::size_t k = 0; k < loops.size(); ++k) plc.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k)});
+  const Domain3 d = make_domain(plc);
+  int flat = -1, crease = -1;
+  for (std::size_t e = 0; e < d.edges.size(); ++e) {
+    if (d.edges[e].a == 0 && d.edges[e].b == 2) flat = static_cast<int>(e);
+    if (d.edges[e].a == 0 && d.edges[e].b == 1) crease = static_cast<int>(e);
+  }
+  ASSERT_GE(flat, 0);
+  ASSERT_GE(crease, 0);
+  EXPECT_TRUE(EdgeCone(d, crease).convex());
+  try {
+    const EdgeCone cone(d, flat);
+    FAIL() << "no DomainError";
+  } catch (const DomainError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
+    EXPECT_EQ(e.ids(), (std::vector<std::int64_t>{0, 2}));
   }
 }
 

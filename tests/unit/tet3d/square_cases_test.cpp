@@ -5,6 +5,7 @@
 // all_boxes_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -136,6 +137,100 @@ TEST(SquareCases, RefusesTwoFacetsWithoutACommonEdge) {
   // With one cap only the square is Case C.
   faces.facets = {caps[0]};
   EXPECT_EQ(squares.triangulate(f.s, faces, out), SquareCase::C);
+}
+
+}  // namespace
+}  // namespace pqmesh::tet3d
+
+namespace pqmesh::tet3d {
+namespace {
+
+// A triangular prism along x over the right angle at (y, z) = (0.23, 0.27),
+// x in [-1, 2]; its edge E0 on that line carries an extra vertex m at
+// x = 0.2, so the facets F (z = 0.27) and G (y = 0.23) share two collinear
+// edges, (p0, m) and (m, p1), as cube.obj's top and front do at (1, 0, 2).
+// Vertex ids: p0 q0 r0 at x = -1, p1 q1 r1 at x = 2, m.
+struct CollinearPrism {
+  Domain3 d;
+  int f = -1, g = -1, e_low = -1, e_high = -1;  // e_high = (m, p1) crosses S at x = 0.5
+  CollinearPrism() {
+    Plc3 plc;
+    plc.vertices = {{-1, 0.23, 0.27}, {-1, 3, 0.27}, {-1, 0.23, 3}, {2, 0.23, 0.27}, {2, 3, 0.27}, {2, 0.23, 3},
+                    {0.2, 0.23, 0.27}};
+    const std::vector<std::vector<int>> loops = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3, 6}, {0, 6, 3, 5, 2}, {1, 2, 5, 4}};
+    for (const auto& l : loops) plc.facets.push_back(Facet3{{l}, 0});
+    d = make_domain(plc);
+    for (std::size_t k = 0; k < d.plc.facets.size(); ++k) {
+      const auto& loop = d.plc.facets[k].loops[0];
+      if (loop.size() != 5) continue;
+      const bool has_q = std::find(loop.begin(), loop.end(), 1) != loop.end();
+      (has_q ? f : g) = static_cast<int>(k);
+    }
+    for (std::size_t e = 0; e < d.edges.size(); ++e) {
+      if (d.edges[e].a == 0 && d.edges[e].b == 6) e_low = static_cast<int>(e);
+      if (d.edges[e].a == 3 && d.edges[e].b == 6) e_high = static_cast<int>(e);
+    }
+  }
+};
+
+TEST(SquareCases, FacetsSharingCollinearEdgesUseTheEdgeThatCrossesTheSquare) {
+  Fixture fx;
+  const CornerSet corners(fx.tree, fx.leaves);
+  const CollinearPrism p;
+  ASSERT_GE(p.f, 0);
+  ASSERT_GE(p.g, 0);
+  ASSERT_GE(p.e_low, 0);
+  ASSERT_GE(p.e_high, 0);
+  PointBook book;
+  SquareDispatcher squares(fx.tree, corners, p.d, book, nullptr);
+  // Both edges lie on F and G; the representative is the smaller id, the
+  // square's edge the one whose segment (x from 0.2 to 2) meets x = 0.5.
+  EXPECT_EQ(squares.edge_of_facets(p.f, p.g), std::min(p.e_low, p.e_high));
+  EXPECT_EQ(squares.edge_for_square(p.f, p.g, square_geometry(fx.s, fx.tree)), p.e_high);
+  // What the boxes of either edge (and a two-facet box) build on S equals
+  // Case B for (m, p1) alone.
+  PointBook book2;
+  std::vector<std::array<int, 3>> want;
+  EXPECT_EQ(triangulate_edge_square(fx.s, corners, fx.tree, EdgeCone(p.d, p.e_high), book2, want), EdgeCutCase::B);
+  ASSERT_FALSE(want.empty());
+  for (const BoxFaces& faces : {squares.faces_of(BoxKind::Edge, p.e_high), squares.faces_of(BoxKind::Edge, p.e_low),
+                                squares.faces_of(BoxKind::TwoFacet, p.e_low)}) {
+    std::vector<std::array<int, 3>> got;
+    EXPECT_EQ(squares.triangulate(fx.s, faces, got), SquareCase::BD);
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(book.key(got[i][k]), book2.key(want[i][k]));
+  }
+  // The local model is the common wedge: inside near the edge on both sides of m.
+  SquareDispatcher::Incidence m;
+  m.facets = {std::min(p.f, p.g), std::max(p.f, p.g)};
+  EXPECT_EQ(squares.local_status(m, {0.5, 0.3, 0.3}), Sign::Negative);
+  EXPECT_EQ(squares.local_status(m, {-0.5, 0.3, 0.3}), Sign::Negative);
+  EXPECT_EQ(squares.local_status(m, {0.5, 0.2, 0.3}), Sign::Positive);
+}
+
+// Facets meeting at a flat edge (coplanar, different markers, so not merged)
+// are refused as a user error naming the edge's vertices and the facets.
+TEST(SquareCases, RefusesAFlatEdgeAsUnsupportedInput) {
+  Fixture fx;
+  const CornerSet corners(fx.tree, fx.leaves);
+  Plc3 plc;
+  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const std::vector<std::vector<int>> loops = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (std::size_t k = 0; k < loops.size(); ++k) plc.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k)});
+  const Domain3 d = make_domain(plc);
+  ASSERT_EQ(d.plc.facets.size(), 7u);  // different markers: the bottom halves stay apart
+  PointBook book;
+  try {
+    SquareDispatcher squares(fx.tree, corners, d, book, nullptr);
+    FAIL() << "no DomainError";
+  } catch (const DomainError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("edge (0, 2) between facets 0 and 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("markers differ (0 and 1)"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,135 @@
+// Two warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
+// §12.5): a face square's centre is carried with its corners (warp.hpp), and
+// a P edge crosses a square whose corners moved where it meets their mean
+// plane (warped_crossing.hpp). Expected points are derived by hand from the
+// configuration (the warped squares below are planar quadrilaterals, so the
+// crossing is a line-plane intersection computed here independently).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "pqmesh/domain.hpp"
+#include "pqmesh/plc.hpp"
+#include "predicates/predicates.hpp"
+#include "tet3d/box_faces.hpp"
+#include "tet3d/grid_point.hpp"
+#include "tet3d/warp.hpp"
+#include "tet3d/warped_crossing.hpp"
+#include "tree/tree.hpp"
+
+namespace pqmesh::tet3d {
+namespace {
+
+// The box [lo, hi] as a validated domain (facets in the order -z, +z, -y, +y, -x, +x).
+Domain3 box_domain(Vec3 lo, Vec3 hi) {
+  Plc3 plc;
+  for (int k = 0; k < 8; ++k)
+    plc.vertices.push_back({(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z});
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    Facet3 f;
+    f.loops.push_back({q[0], q[1], q[2], q[3]});
+    plc.facets.push_back(f);
+  }
+  return make_domain(plc);
+}
+
+// The root's lower z face (one square: the root has no children).
+FaceSquare bottom_square(const OctTree& t, const CornerSet& corners) {
+  std::vector<FaceSquare> s;
+  face_squares(t.key(0), 2, false, corners, s);
+  EXPECT_EQ(s.size(), 1u);
+  return s.at(0);
+}
+
+GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
+
+// Candidates: the four corners of the bottom face (ring neighbours along the
+// square) with every facet, and the square's centre.
+std::vector<WarpCandidate> bottom_candidates(const OctTree& t, const FaceSquare& s, int facets) {
+  std::vector<int> all;
+  for (int f = 0; f < facets; ++f) all.push_back(f);
+  const GridPoint c[4] = {corner_of(t, 0), corner_of(t, 1), corner_of(t, 3), corner_of(t, 2)};  // around the face
+  std::vector<WarpCandidate> out;
+  for (int i = 0; i < 4; ++i) out.push_back({c[i], all, {c[(i + 1) % 4], c[(i + 3) % 4]}, {}, 0});
+  out.push_back({s.centre(), all, {}, {c[0], c[1], c[2], c[3]}, -1});
+  return out;
+}
+
+TEST(WarpRules, SquareCentreMovesWithItsCorners) {
+  // P = [-1, 2]^2 x [0.01, 2]; the root cube [0, 1]^3 (h = 1). Each bottom
+  // corner is 0.01 <= h/16 below the bottom facet and far from every P edge:
+  // the second pass moves it h/16 along -z. The centre (0.5, 0.5, 0) moves
+  // by the mean of the four equal moves and stays below the facet.
+  const OctTree t(RootCube<3>{{0, 0, 0}, 1});
+  const CornerSet corners(t, t.leaves());
+  const Domain3 d = box_domain({-1, -1, 0.01}, {2, 2, 2});
+  const FaceSquare s = bottom_square(t, corners);
+  const std::vector<WarpCandidate> cand = bottom_candidates(t, s, 6);
+  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  for (int i = 0; i < 4; ++i) {
+    const Warp* c = w.find(cand[static_cast<std::size_t>(i)].p);
+    ASSERT_NE(c, nullptr) << "corner " << i;
+    EXPECT_EQ(c->at.z, -1.0 / 16);
+  }
+  const Warp* c = w.find(s.centre());
+  ASSERT_NE(c, nullptr);
+  EXPECT_DOUBLE_EQ(c->at.x, 0.5);
+  EXPECT_DOUBLE_EQ(c->at.y, 0.5);
+  EXPECT_DOUBLE_EQ(c->at.z, -1.0 / 16);
+  EXPECT_EQ(w.centres, 1);
+}
+
+TEST(WarpRules, SquareCentreOnAFacetPlaneStays) {
+  // P = [0.5, 2] x [-1, 2] x [0.01, 2]: the corners at x = 1 are close to
+  // the bottom facet and move; the centre lies exactly on the plane x = 0.5
+  // of a facet, an exact boundary point: it is not moved.
+  const OctTree t(RootCube<3>{{0, 0, 0}, 1});
+  const CornerSet corners(t, t.leaves());
+  const Domain3 d = box_domain({0.5, -1, 0.01}, {2, 2, 2});
+  const FaceSquare s = bottom_square(t, corners);
+  const WarpTable w = warp_box_vertices(t, corners, d, bottom_candidates(t, s, 6));
+  EXPECT_NE(w.find(corner_of(t, 1)), nullptr);
+  EXPECT_EQ(w.find(s.centre()), nullptr);
+  EXPECT_EQ(w.centres, 0);
+}
+
+TEST(WarpRules, EdgeCrossingMovesOntoTheWarpedSquare) {
+  // E runs along (0, -1, 1) in the plane x = 0.5 and crosses the bottom face
+  // z = 0 at y = 0.02, 0.02 from the root's box edge y = z = 0: it clips the
+  // cube near that edge. The first pass moves the edge by h/8 away from E,
+  // along (0, -1, -1)/sqrt(2): corners 0 and 1 to y = z = -a, a = 1/(8
+  // sqrt(2)). The warped bottom square is planar (two edges parallel to x),
+  // through the lines (y, z) = (-a, -a) and (1, 0): z = a (y - 1) / (1 + a).
+  // With y + z = 0.02 on E: y = (0.02 (1 + a) + a) / (1 + 2a).
+  const OctTree t(RootCube<3>{{0, 0, 0}, 1});
+  const CornerSet corners(t, t.leaves());
+  const FaceSquare s = bottom_square(t, corners);
+  const Vec3 ea{0.5, 1.02, -1}, eb{0.5, -1, 1.02};
+  EXPECT_FALSE(warped_square_crossing(ea, eb, s, t, nullptr).has_value());
+  WarpTable w;
+  EXPECT_FALSE(warped_square_crossing(ea, eb, s, t, &w).has_value());  // no corner moved
+  const double a = 1 / (8 * std::sqrt(2.0));
+  w.insert(corner_of(t, 0), Warp{-1, {0, -a, -a}});
+  w.insert(corner_of(t, 1), Warp{-1, {1, -a, -a}});
+  const std::optional<Vec3> x = warped_square_crossing(ea, eb, s, t, &w);
+  ASSERT_TRUE(x.has_value());
+  const double y = (0.02 * (1 + a) + a) / (1 + 2 * a);
+  EXPECT_NEAR(x->x, 0.5, 1e-15);
+  EXPECT_NEAR(x->y, y, 1e-12);
+  EXPECT_NEAR(x->z, 0.02 - y, 1e-12);
+  EXPECT_TRUE(within_ulp_of_segment(*x, ea, eb));
+  // The crossing with the y = 0 face moves symmetrically (to (y, z) =
+  // (0.02 - y, y)), so the two I vertices, 0.02 sqrt(2) < h/32 apart on the
+  // prewarped faces, end sqrt(2) (2y - 0.02) > h/16 apart (Lemma 6's bound).
+  const double apart = std::sqrt(2.0) * (y - (0.02 - y));
+  EXPECT_GT(apart, 1.0 / 16);
+  EXPECT_LT(std::sqrt(2.0) * 0.02, 1.0 / 32);
+  // E parallel to the square's mean plane (along x): no crossing.
+  EXPECT_FALSE(warped_square_crossing({-1, 0.5, -0.01}, {2, 0.5, -0.01}, s, t, &w).has_value());
+}
+
+}  // namespace
+}  // namespace pqmesh::tet3d
