@@ -8,21 +8,25 @@
 #   bench/run_3d.sh [--target N] [--large-target N] [--no-large] [--repeat R]
 #                   [--tsv FILE] [--keep] [INPUT.poly ...]
 #
-#   --target N        corpus: aim every tool at about N tetrahedra (default:
+#   --target N        corpus: aim pqmesh at about N tetrahedra, the peers at
+#                     pqmesh's count (default:
 #                     each tool at its own default size; gmsh's point size is
 #                     then a tenth of the model's largest extent)
 #   --large-target N  large case (data/3d/plate_holes.poly): about N
-#                     tetrahedra (default 1000000)
+#                     tetrahedra, as --target (default 1000000)
 #   --no-large        skip the large case
 #   --repeat R        time each run R times, report the fastest (default 1)
 #   --tsv FILE        also write the table as tab-separated values
 #   --keep            keep the work directory (meshes, logs, .geo files)
 #   INPUT.poly ...    TetGen .poly inputs instead of data/3d/*.poly
 #
-# Sizes: each tool is calibrated by one trial run and the power law
+# Sizes: pqmesh first: its --max-size moves the count in steps of about 8
+# (box sides are powers of two), so trial runs halve H from the root side
+# until the next step would pass the target and keep the count nearest it. The peers then aim at
+# the count pqmesh made, each calibrated by trial runs and the power law
 # count ~ (max volume)^-1 for tetgen -a, count ~ (point size)^-3 for gmsh;
-# one calibration step for tetgen, two for gmsh; counts land within about 30%
-# of the target.
+# one calibration step for tetgen, two for gmsh; their counts land within
+# about 30% of pqmesh's.
 #
 # Columns: wall s and peak MiB from /usr/bin/time -f '%e %M' over the whole
 # process (read, mesh, write: tetgen its ASCII .node/.ele/.face, gmsh binary
@@ -150,27 +154,74 @@ run_gmsh() {  # name input target label extra-args...
   row "$label" "$name" "$tets" "$wall" "$kib" "$dmin" "$dmax" "$aspect" "$(validity "$dir/ascii.msh" "$in")"
 }
 
-run_pqmesh() {  # name input target
-  local name=$1 in=$2 want=$3 dir=$work/pqmesh_$1
+# pqmesh_trial IN [H]: sets n (tetrahedra of `pqmesh mesh IN [--max-size H]`,
+# empty on failure) and side (the root cube side from the summary).
+pqmesh_trial() {
+  local out
+  out=$("$pqmesh" mesh "$1" -o "$work/trial.vtu" ${2:+--max-size "$2"} 2>/dev/null)
+  n=$(awk '/^mesh/ { print $2; exit }' <<<"$out")
+  side=$(awk '/^grid/ { for (i = 1; i < NF; ++i) if ($i == "side") { gsub(/,/, "", $(i + 1)); print $(i + 1) } }' <<<"$out")
+}
+
+# pqmesh_size IN TARGET: sets size to the --max-size (empty: none) whose count
+# is nearest TARGET in ratio. --max-size only refines the default mesh, and box
+# sides are powers of two, so the count is flat in H between powers of two and
+# grows about 8-fold per halving once H binds. From the default run, H starts
+# at the root side and halves; a trial is run only while the count it would
+# give (8 times the last, once binding) is not farther from TARGET than the
+# last count (no 8x overshoot trials).
+pqmesh_size() {
+  local in=$1 want=$2 h last k prev_h="" n side
+  size=""
+  pqmesh_trial "$in"
+  [[ $n =~ ^[0-9]+$ && $side =~ ^[0-9.e+-]+$ ]] || return 0
+  last=$n h=$side
+  for ((k = 0; k < 16; k++)); do
+    # Stop when the next step (x8) would land farther from the target.
+    awk -v n="$last" -v w="$want" 'BEGIN { exit !(w * w <= 8 * n * n) }' && { size=$prev_h; return 0; }
+    h=$(awk -v h="$h" 'BEGIN { printf "%.6g", h / 2 }')
+    pqmesh_trial "$in" "$h"
+    [[ $n =~ ^[0-9]+$ ]] || { size=$prev_h; return 0; }
+    ((n == last)) && continue  # H does not bind yet
+    if ((n >= want)); then  # bracketed: the nearer of the two
+      awk -v a="$last" -v b="$n" -v w="$want" 'BEGIN { exit !(w / a <= b / w) }' && size=$prev_h || size=$h
+      return 0
+    fi
+    last=$n prev_h=$h
+  done
+  size=$prev_h
+}
+
+run_pqmesh() {  # name input target; sets pq_tets (count meshed, for the peers)
+  local name=$1 in=$2 want=$3 dir=$work/pqmesh_$1 size=""
+  pq_tets=""
   mkdir -p "$dir"
   ((have_pqmesh)) || { row pqmesh "$name" missing n/a n/a n/a n/a n/a n/a; return; }
   "$pqmesh" mesh "$in" -o "$dir/probe.vtu" --quiet >/dev/null 2>&1
   if [[ $? -eq 2 ]]; then row pqmesh "$name" "n/a (3D mesh: issue 5)" n/a n/a n/a n/a n/a n/a; return; fi
   local opts=()
-  [[ -n $want ]] && opts=(--max-size "$(awk -v e="$(extent "$in")" -v n="$want" 'BEGIN { printf "%.6g", e / (n / 6) ^ (1 / 3) }')")
+  if [[ -n $want ]]; then
+    pqmesh_size "$in" "$want"
+    [[ -n $size ]] && opts=(--max-size "$size")
+  fi
   if ! timed "$dir/log" "$pqmesh" mesh "$in" -o "$dir/m.vtu" --quiet "${opts[@]}"; then
     row pqmesh "$name" failed n/a n/a n/a n/a n/a n/a; return
   fi
   quality "$dir/m.vtu"
+  [[ $tets =~ ^[0-9]+$ ]] && pq_tets=$tets
   row pqmesh "$name" "$tets" "$wall" "$kib" "$dmin" "$dmax" "$aspect" yes  # pqmesh checks before writing
 }
 
 run_all() {  # name input target
   run_pqmesh "$@"
-  if ((have_tetgen)); then run_tetgen "$@"; else row tetgen "$1" missing n/a n/a n/a n/a n/a n/a; fi
+  # With a target, the peers aim at the count pqmesh actually made (its
+  # sizes come in steps of about 8x), so all rows compare equal counts.
+  local want=$3
+  [[ -n $want && -n $pq_tets ]] && want=$pq_tets
+  if ((have_tetgen)); then run_tetgen "$1" "$2" "$want"; else row tetgen "$1" missing n/a n/a n/a n/a n/a n/a; fi
   if ((have_gmsh)); then
-    run_gmsh "$1" "$2" "$3" gmsh-default
-    run_gmsh "$1" "$2" "$3" gmsh-hxt -algo hxt -nt 2
+    run_gmsh "$1" "$2" "$want" gmsh-default
+    run_gmsh "$1" "$2" "$want" gmsh-hxt -algo hxt -nt 2
   else
     row gmsh "$1" missing n/a n/a n/a n/a n/a n/a
   fi

@@ -9,10 +9,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "args.hpp"
 #include "commands.hpp"
@@ -45,7 +47,47 @@ struct Mesh3Run {
   double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0, seconds_write = 0;
 };
 
-void print_summary(const Domain3& domain, const Mesh3Run& run) {
+// The summary's quality line: the largest aspect ratio (first tetrahedron
+// attaining it), the smallest minimum and the largest maximum dihedral angle,
+// as quality_report gives them. When the .vtu quality fields were computed
+// (quality_fields.hpp: the same tetrahedron_quality values, in tetrahedron
+// order) they are scanned instead of evaluating every tetrahedron again; the
+// scan keeps quality_report's rule (first element, then strict comparisons).
+struct SummaryQuality {
+  double max_aspect = 0, min_dihedral = 0, max_dihedral = 0;
+  std::int64_t argmax_aspect = -1;
+};
+
+SummaryQuality summary_quality(const TetMesh3& mesh, const std::vector<CellField>& fields) {
+  const CellField *aspect = nullptr, *min_d = nullptr, *max_d = nullptr;
+  for (const CellField& f : fields) {
+    if (f.values.size() != mesh.tetrahedra.size()) continue;
+    if (f.name == "aspect_ratio") aspect = &f;
+    if (f.name == "min_dihedral") min_d = &f;
+    if (f.name == "max_dihedral") max_d = &f;
+  }
+  SummaryQuality out;
+  if (aspect == nullptr || min_d == nullptr || max_d == nullptr) {
+    const QualityReport q = quality_report(mesh);
+    out.max_aspect = q.aspect_ratio.max;
+    out.argmax_aspect = q.aspect_ratio.argmax;
+    out.min_dihedral = q.min_angle.min;
+    out.max_dihedral = q.max_angle.max;
+    return out;
+  }
+  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) {
+    const double a = aspect->values[e], lo = min_d->values[e], hi = max_d->values[e];
+    if (e == 0 || a > out.max_aspect) {
+      out.max_aspect = a;
+      out.argmax_aspect = static_cast<std::int64_t>(e);
+    }
+    if (e == 0 || lo < out.min_dihedral) out.min_dihedral = lo;
+    if (e == 0 || hi > out.max_dihedral) out.max_dihedral = hi;
+  }
+  return out;
+}
+
+void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector<CellField>& fields) {
   const TetMesh3& mesh = run.result.mesh;
   const TetMeshStats& s = run.result.stats;
   std::cout << "input      " << run.input << " (3D, " << domain.plc.vertices.size() << " vertices, "
@@ -63,12 +105,12 @@ void print_summary(const Domain3& domain, const Mesh3Run& run) {
     std::cout << "sizing     " << sizing << '\n';
   }
   const AlphaResult alpha = compute_alpha(domain.plc);
-  const QualityReport q = quality_report(mesh);
+  const SummaryQuality q = summary_quality(mesh, fields);
   std::cout << "alpha      " << alpha.describe(domain.plc.source.first_id) << '\n'
             << "mesh       " << mesh.tetrahedra.size() << " tetrahedra, " << mesh.vertices.size() << " vertices, "
             << mesh.faces.size() << " boundary triangles\n"
-            << "quality    max aspect ratio " << fmt4(q.aspect_ratio.max) << " (tetrahedron " << q.aspect_ratio.argmax
-            << "), dihedral min " << fmt4(q.min_angle.min) << " deg, max " << fmt4(q.max_angle.max) << " deg\n"
+            << "quality    max aspect ratio " << fmt4(q.max_aspect) << " (tetrahedron " << q.argmax_aspect
+            << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max " << fmt4(q.max_dihedral) << " deg\n"
             << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
             << " cells); tetrahedra / I3 = "
             << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.tetrahedra.size()) / run.lfs.value) : "-")
@@ -160,7 +202,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   if (run.format == MeshFormat::Vtu) write.cell_fields = quality_fields(run.result.mesh);
   write_mesh(run.result.mesh, run.output, write);
   run.seconds_write = seconds_since(start);
-  if (!quiet) print_summary(domain, run);
+  if (!quiet) print_summary(domain, run, write.cell_fields);
   return kExitOk;
 }
 

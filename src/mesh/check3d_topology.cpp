@@ -98,31 +98,57 @@ bool Checker3::stage3_faces() {
   const int nt = static_cast<int>(m_.tetrahedra.size());
   const std::int64_t nonconf_before = sink_.count(CheckKind::NonConforming);
 
-  // Face records bucketed by their smallest vertex (counting sort).
+  // Faces bucketed by their smallest vertex. A positive tetrahedron has four
+  // distinct vertices m1 < m2 < m3 < m4; its three faces through m1 have
+  // smallest vertex m1 and the face (m2, m3, m4) has m2. So the tetrahedra are
+  // filed (counting sort) under their two smallest vertices only, and each
+  // vertex's bucket of face records is built from its filed tetrahedra when
+  // its turn comes: 8 bytes per tetrahedron instead of a table of all faces.
   struct Rec {
     int b, c;
     std::uint32_t code;  // (tetrahedron << 1) | parity of the sorting permutation
   };
-  std::vector<int> start(static_cast<std::size_t>(nv) + 1, 0);
-  for (int t = 0; t < nt; ++t)
-    for (int f = 0; f < 4; ++f) {
-      const auto& q = m_.tetrahedra[t];
-      ++start[std::min({q[kFaces[f][0]], q[kFaces[f][1]], q[kFaces[f][2]]}) + 1];
+  auto two_smallest = [](const std::array<int, 4>& q) {
+    int a = std::min(q[0], q[1]), b = std::max(q[0], q[1]);
+    for (int i = 2; i < 4; ++i) {
+      if (q[i] < a) {
+        b = a;
+        a = q[i];
+      } else if (q[i] < b) {
+        b = q[i];
+      }
     }
+    return std::array<int, 2>{a, b};
+  };
+  std::vector<int> start(static_cast<std::size_t>(nv) + 1, 0);
+  for (int t = 0; t < nt; ++t) {
+    const auto ab = two_smallest(m_.tetrahedra[t]);
+    ++start[ab[0] + 1];
+    ++start[ab[1] + 1];
+  }
   for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<Rec> recs(start[nv]);
+  std::vector<int> filed(static_cast<std::size_t>(start[nv]));
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
-    for (int t = 0; t < nt; ++t)
+    for (int t = 0; t < nt; ++t) {
+      const auto ab = two_smallest(m_.tetrahedra[t]);
+      filed[fill[ab[0]]++] = t;
+      filed[fill[ab[1]]++] = t;
+    }
+  }
+  std::vector<Rec> recs;
+  for (int a = 0; a < nv; ++a) {
+    recs.clear();
+    for (int j = start[a]; j < start[a + 1]; ++j) {
+      const int t = filed[j];
+      const auto& q = m_.tetrahedra[t];
       for (int f = 0; f < 4; ++f) {
-        const auto& q = m_.tetrahedra[t];
         std::array<int, 3> x = {q[kFaces[f][0]], q[kFaces[f][1]], q[kFaces[f][2]]};
         const auto parity = static_cast<std::uint32_t>(sort_with_parity(x));
-        recs[fill[x[0]]++] = Rec{x[1], x[2], (static_cast<std::uint32_t>(t) << 1) | parity};
+        if (x[0] == a) recs.push_back(Rec{x[1], x[2], (static_cast<std::uint32_t>(t) << 1) | parity});
       }
-  }
-  for (int a = 0; a < nv; ++a) {
-    auto first = recs.begin() + start[a], last = recs.begin() + start[a + 1];
+    }
+    auto first = recs.begin(), last = recs.end();
     std::sort(first, last, [](const Rec& x, const Rec& y) {
       if (x.b != y.b) return x.b < y.b;
       if (x.c != y.c) return x.c < y.c;
@@ -158,8 +184,9 @@ bool Checker3::stage3_faces() {
       it = run_end;
     }
   }
-  recs = {};
-  start = {};
+  std::vector<Rec>().swap(recs);
+  std::vector<int>().swap(filed);
+  std::vector<int>().swap(start);
   rep_.boundary_faces = static_cast<std::int64_t>(faces_.boundary.size());
 
   report_unused_vertices(sink_, m_.vertices, m_.tetrahedra, "tetrahedron");

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
+#include "mesh3d/single_faces.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
@@ -13,22 +16,6 @@
 namespace pqmesh::mesh3d {
 
 namespace {
-
-struct FaceRecord {
-  std::array<int, 3> sorted;
-  std::int32_t tet;
-  std::int8_t face;
-};
-
-// Outward faces of a positive tetrahedron (a, b, c, d).
-std::array<int, 3> outward_face(const std::array<int, 4>& k, int i) {
-  switch (i) {
-    case 0: return {k[0], k[2], k[1]};
-    case 1: return {k[0], k[1], k[3]};
-    case 2: return {k[1], k[2], k[3]};
-    default: return {k[0], k[3], k[2]};
-  }
-}
 
 class FacetFinder {
  public:
@@ -84,49 +71,8 @@ class FacetFinder {
 
 void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf, TetMesh3& mesh) {
   const Domain3& d = builder.domain();
-  // Faces of exactly one tetrahedron. Each face is keyed by its sorted vertex
-  // triple; with fewer than 2^21 vertices the triple packs into one 64-bit
-  // integer (sorting those is several times faster than sorting triples).
-  std::vector<std::pair<std::int32_t, std::int8_t>> singles;
-  if (mesh.vertices.size() < (std::size_t{1} << 21)) {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;  // (packed triple, tet * 4 + face)
-    keys.reserve(4 * mesh.tetrahedra.size());
-    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
-      for (int i = 0; i < 4; ++i) {
-        std::array<int, 3> s3 = outward_face(mesh.tetrahedra[t], i);
-        std::sort(s3.begin(), s3.end());
-        const std::uint64_t k = (static_cast<std::uint64_t>(s3[0]) << 42) | (static_cast<std::uint64_t>(s3[1]) << 21) |
-                                static_cast<std::uint64_t>(s3[2]);
-        keys.push_back({k, static_cast<std::uint32_t>(4 * t + static_cast<std::size_t>(i))});
-      }
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 0; i < keys.size();) {
-      std::size_t j = i + 1;
-      while (j < keys.size() && keys[j].first == keys[i].first) ++j;
-      if (j == i + 1)
-        singles.push_back({static_cast<std::int32_t>(keys[i].second / 4), static_cast<std::int8_t>(keys[i].second % 4)});
-      i = j;
-    }
-  } else {
-    std::vector<FaceRecord> recs;
-    recs.reserve(4 * mesh.tetrahedra.size());
-    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
-      for (int i = 0; i < 4; ++i) {
-        std::array<int, 3> s3 = outward_face(mesh.tetrahedra[t], i);
-        std::sort(s3.begin(), s3.end());
-        recs.push_back({s3, static_cast<std::int32_t>(t), static_cast<std::int8_t>(i)});
-      }
-    std::sort(recs.begin(), recs.end(), [](const FaceRecord& x, const FaceRecord& y) {
-      return x.sorted != y.sorted ? x.sorted < y.sorted : (x.tet != y.tet ? x.tet < y.tet : x.face < y.face);
-    });
-    for (std::size_t i = 0; i < recs.size();) {
-      std::size_t j = i + 1;
-      while (j < recs.size() && recs[j].sorted == recs[i].sorted) ++j;
-      if (j == i + 1) singles.push_back({recs[i].tet, recs[i].face});
-      i = j;
-    }
-  }
-  std::sort(singles.begin(), singles.end());
+  const std::vector<std::int64_t> singles =
+      single_faces(mesh.tetrahedra, static_cast<int>(mesh.vertices.size()));
 
   FacetFinder finder(d);
   std::vector<int> candidates;
@@ -134,8 +80,9 @@ void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std:
   mesh.face_markers.clear();
   mesh.faces.reserve(singles.size());
   mesh.face_markers.reserve(singles.size());
-  for (const auto& [t, i] : singles) {
-    const std::array<int, 3> f = outward_face(mesh.tetrahedra[static_cast<std::size_t>(t)], i);
+  for (const std::int64_t code : singles) {
+    const std::int64_t t = code / 4;
+    const std::array<int, 3> f = outward_face(mesh.tetrahedra[static_cast<std::size_t>(t)], static_cast<int>(code % 4));
     const std::array<Vec3, 3> p = {mesh.vertices[static_cast<std::size_t>(f[0])],
                                    mesh.vertices[static_cast<std::size_t>(f[1])],
                                    mesh.vertices[static_cast<std::size_t>(f[2])]};

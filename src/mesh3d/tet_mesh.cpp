@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mesh3d/boundary_faces.hpp"
 #include "mesh3d/box_plan.hpp"
@@ -122,6 +123,10 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   t = Clock::now();
   report("boundary");
   out.mesh = std::move(boxes.mesh);
+  // Vertex keys and job numbers are not needed any more: release them before
+  // the boundary tables are built (peak memory).
+  std::vector<tet3d::VertexKey>().swap(boxes.keys);
+  std::vector<std::int32_t>().swap(boxes.tet_job);
   mesh3d::add_boundary_faces(builder, boxes.tet_leaf, out.mesh);
   s.boundary_faces = static_cast<std::int64_t>(out.mesh.faces.size());
   out.mesh.tetrahedron_markers.assign(out.mesh.tetrahedra.size(), region_attribute(domain));

@@ -1,0 +1,88 @@
+#include "mesh3d/single_faces.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace pqmesh::mesh3d {
+
+std::array<int, 3> outward_face(const std::array<int, 4>& k, int i) {
+  switch (i) {
+    case 0: return {k[0], k[2], k[1]};
+    case 1: return {k[0], k[1], k[3]};
+    case 2: return {k[1], k[2], k[3]};
+    default: return {k[0], k[3], k[2]};
+  }
+}
+
+namespace {
+
+// The two smallest ids of a tetrahedron (equal when the smallest repeats).
+std::array<int, 2> two_smallest(const std::array<int, 4>& k) {
+  int a = std::min(k[0], k[1]), b = std::max(k[0], k[1]);
+  for (int i = 2; i < 4; ++i) {
+    const int v = k[static_cast<std::size_t>(i)];
+    if (v < a) {
+      b = a;
+      a = v;
+    } else if (v < b) {
+      b = v;
+    }
+  }
+  return {a, b};
+}
+
+struct FiledFace {
+  int b, c;           // the other two vertex ids, b <= c
+  std::int64_t code;  // 4 t + i
+  friend bool operator<(const FiledFace& x, const FiledFace& y) {
+    return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.code < y.code);
+  }
+};
+
+}  // namespace
+
+std::vector<std::int64_t> single_faces(const std::vector<std::array<int, 4>>& tetrahedra, int vertex_count) {
+  const auto nv = static_cast<std::size_t>(std::max(vertex_count, 0));
+  // Counting sort of the tetrahedra under their two smallest ids (one entry
+  // when they are equal): offset[v] .. offset[v + 1] lists v's tetrahedra.
+  std::vector<std::size_t> offset(nv + 1, 0);
+  for (const auto& k : tetrahedra) {
+    const auto [a, b] = two_smallest(k);
+    ++offset[static_cast<std::size_t>(a) + 1];
+    if (b != a) ++offset[static_cast<std::size_t>(b) + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v) offset[v + 1] += offset[v];
+  std::vector<std::int32_t> filed(offset[nv]);
+  {
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for (std::size_t t = 0; t < tetrahedra.size(); ++t) {
+      const auto [a, b] = two_smallest(tetrahedra[t]);
+      filed[fill[static_cast<std::size_t>(a)]++] = static_cast<std::int32_t>(t);
+      if (b != a) filed[fill[static_cast<std::size_t>(b)]++] = static_cast<std::int32_t>(t);
+    }
+  }
+  std::vector<std::int64_t> singles;
+  std::vector<FiledFace> here;
+  for (std::size_t v = 0; v < nv; ++v) {
+    here.clear();
+    for (std::size_t j = offset[v]; j < offset[v + 1]; ++j) {
+      const auto t = static_cast<std::size_t>(filed[j]);
+      for (int i = 0; i < 4; ++i) {
+        std::array<int, 3> f = outward_face(tetrahedra[t], i);
+        std::sort(f.begin(), f.end());
+        if (f[0] == static_cast<int>(v)) here.push_back({f[1], f[2], static_cast<std::int64_t>(4 * t) + i});
+      }
+    }
+    std::sort(here.begin(), here.end());
+    for (std::size_t i = 0; i < here.size();) {
+      std::size_t j = i + 1;
+      while (j < here.size() && here[j].b == here[i].b && here[j].c == here[i].c) ++j;
+      if (j == i + 1) singles.push_back(here[i].code);
+      i = j;
+    }
+  }
+  std::sort(singles.begin(), singles.end());
+  return singles;
+}
+
+}  // namespace pqmesh::mesh3d
