@@ -28,6 +28,9 @@
 // then has length L(E)/4 s'^theta >= L(E) / (4e) (theta <= -1/ln s'), a
 // constant factor in the analysis of Fig. 5.11 (L(YU) >= 3/4 L(E) still holds).
 //
+// (3) Spokes are never shorter than delta_P(V) / 16 (spoke_floor.hpp): the
+// thesis's spirals can meet below the resolution of doubles (§11.6).
+//
 // Edge welding (Fig. 5.11): for E = V -> U with first spoke N = VY of V's
 // wedge and last spoke M = UX of U's wedge, if angle(N, E) <= angle(M, E)
 // the triangles are VUY and YUX (new edges YU, YX), otherwise VUX and VXY.
@@ -35,9 +38,11 @@
 // its spoke at prev(U) to its spoke at next(U), and across to the next wedge.
 // All of this is floating-point construction; nothing is decided here.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
+#include "nosteiner2d/spoke_floor.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
 #include "pqmesh/nosteiner.hpp"
 #include "predicates/predicates.hpp"
@@ -127,6 +132,25 @@ void place_points(VertexWedge& w, Vec2 V, Vec2 next) {
   }
 }
 
+// Deviation 4 (addition): of the two diagonals of the quadrilateral V U X Y
+// of Fig. 5.11, keep the thesis's choice unless the other one is valid (both
+// triangles counter-clockwise, exact orient2d) and has the strictly larger
+// min angle. A Lawson-type local choice: never worse than the thesis's rule.
+using Pair = std::array<std::array<int, 3>, 2>;
+const Pair& better_diagonal(const std::vector<Vec2>& pts, const Pair& thesis, const Pair& other) {
+  auto ccw = [&](const std::array<int, 3>& t) {
+    return orient2d(pts[std::size_t(t[0])], pts[std::size_t(t[1])], pts[std::size_t(t[2])]) == Sign::Positive;
+  };
+  auto angle = [&](const Pair& p) {
+    double m = std::numbers::pi;
+    for (const auto& t : p)
+      m = std::min(m, detail::min_angle(pts[std::size_t(t[0])], pts[std::size_t(t[1])], pts[std::size_t(t[2])]));
+    return m;
+  };
+  if (ccw(other[0]) && ccw(other[1]) && angle(other) > angle(thesis)) return other;
+  return thesis;
+}
+
 }  // namespace
 
 PolygonQ polygon_q(const Domain2& domain, const SteinerFreeBound& bound) {
@@ -146,7 +170,14 @@ PolygonQ polygon_q(const Domain2& domain, const SteinerFreeBound& bound) {
     runs.push_back(runs_of(wedges.back(), sn.alpha));
   }
   // Pass 2: both ends of an input edge rotate off it by the smaller of their
-  // two angles (see the header comment), then place the spokes.
+  // two angles (see the header comment), then raise the spokes to the floor
+  // (deviation 4, spoke_floor.hpp) and place them.
+  std::vector<std::vector<Vec2>> p_loops;
+  for (const auto& loop : domain.loops) {
+    p_loops.emplace_back();
+    for (int v : loop) p_loops.back().push_back(P[std::size_t(v)]);
+  }
+  const PolygonDelta delta_p = polygon_delta(p_loops);
   std::vector<std::vector<int>> first_id(domain.loops.size());
   std::size_t base = 0;
   for (std::size_t l = 0; l < domain.loops.size(); ++l) {
@@ -158,6 +189,7 @@ PolygonQ polygon_q(const Domain2& domain, const SteinerFreeBound& bound) {
       const double tf = std::min(runs[i].default_f, runs[iprev].default_e);
       VertexWedge w = wedges[i];
       rotate_off_edges(w, spirals[i], runs[i], te, tf);
+      detail::floor_spokes(w, std::log(detail::kSpokeFloorFraction * delta_p.vertex[l][std::size_t(k)]));
       place_points(w, P[loop[k]], P[loop[(k + 1) % n]]);
       q.representable = q.representable && w.representable;
       first_id[l].push_back(static_cast<int>(q.wedges.vertices.size()));
@@ -192,13 +224,11 @@ PolygonQ polygon_q(const Domain2& domain, const SteinerFreeBound& bound) {
       const int x = first_id[l][kn] + static_cast<int>(wn.spokes.size()) - 1;  // M's end (U's last spoke)
       const double angle_n = wv.spokes.front().phi;
       const double angle_m = bound.spirals[2 * (base + kn)].alpha - wn.spokes.back().phi;
-      if (angle_n <= angle_m) {
-        q.wedges.triangles.push_back({v, u, y});
-        q.wedges.triangles.push_back({y, u, x});
-      } else {
-        q.wedges.triangles.push_back({v, u, x});
-        q.wedges.triangles.push_back({v, x, y});
-      }
+      const std::array<std::array<int, 3>, 2> by_uy{{{v, u, y}, {y, u, x}}}, by_vx{{{v, u, x}, {v, x, y}}};
+      const bool thesis_uy = angle_n <= angle_m;
+      const auto& chosen = better_diagonal(q.wedges.vertices, thesis_uy ? by_uy : by_vx, thesis_uy ? by_vx : by_uy);
+      q.wedges.triangles.push_back(chosen[0]);
+      q.wedges.triangles.push_back(chosen[1]);
     }
     q.loops.push_back(std::move(ql));
     base += static_cast<std::size_t>(n);

@@ -221,16 +221,21 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
   SCOPED_TRACE(what);
   const double g = steiner_free_bound(d).g;
   const PolygonQ q = polygon_q(d, steiner_free_bound(d, {.sides_at_far_end = true}));
+  // The spoke floor (docs/ALGORITHM.md §11.7 deviation 4) made Q and R
+  // representable and valid on every input here (measured); asserted.
+  EXPECT_TRUE(q.representable);
   if (!q.representable) {
     ++st.skipped_q;
     return;
   }
   const auto ql = q_loop_points(q);
   const PolygonR r = shrink_q_to_r(ql);
+  EXPECT_TRUE(r.representable);
   if (!r.representable) {  // shrink distances at the coordinates' resolution (docs/ALGORITHM.md §11.8)
     ++st.skipped_r;
     return;
   }
+  EXPECT_TRUE(r.valid) << r.failure;
   if (!r.valid) {  // the shrink's own exact checks (shrink_r_test asserts them): counted, printed
     ++st.r_invalid;
     std::cout << "[match] " << what << ": R invalid: " << r.failure << "\n";

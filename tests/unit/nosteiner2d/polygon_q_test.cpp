@@ -37,7 +37,11 @@ void check_q(const Domain2& d, const std::string& what, Stats& st) {
   SCOPED_TRACE(what);
   const SteinerFreeBound b = steiner_free_bound(d, {.sides_at_far_end = true});
   const PolygonQ q = polygon_q(d, b);
-  if (!q.representable) {  // spokes below the coordinates' resolution (see the draft)
+  // With the spoke floor (docs/ALGORITHM.md §11.7 deviation 4) Q is
+  // representable on every input here (before it, 58 of the 300 random
+  // polygons had spokes below the coordinates' resolution).
+  EXPECT_TRUE(q.representable);
+  if (!q.representable) {
     ++st.skipped;
     return;
   }
