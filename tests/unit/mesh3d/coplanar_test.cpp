@@ -4,11 +4,10 @@
 // plc/merge_coplanar.hpp), and a flat edge between different markers
 // (refused as unsupported input, never an internal error). Every mesh is
 // checked whole (check_mesh) and its boundary markers are checked against
-// the facet planes, as in generic_corpus_test.cpp.
+// the facet planes (mesh_check_util.hpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <set>
 #include <string>
 
 #include "../plc/domain_fixtures.hpp"
@@ -18,49 +17,17 @@
 #include "pqmesh/read_domain.hpp"
 #include "pqmesh/tetmesh.hpp"
 #include "predicates/predicates.hpp"
+#include "mesh_check_util.hpp"
 #include "support/paths.hpp"
 
 namespace pqmesh {
 namespace {
 
-// Three non-collinear vertices of facet f's outer loop (exact test).
-bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {
-  const auto& loop = d.plc.facets[f].loops[0];
-  const auto& P = d.plc.vertices;
-  for (std::size_t k = 2; k < loop.size(); ++k) {
-    a = P[loop[0]], b = P[loop[1]], c = P[loop[k]];
-    if (orient2d_projected(a, b, c, 0) != Sign::Zero || orient2d_projected(a, b, c, 1) != Sign::Zero ||
-        orient2d_projected(a, b, c, 2) != Sign::Zero)
-      return true;
-  }
-  return false;
-}
-
 // Meshes, checks, and checks every boundary triangle's marker: some facet
 // with that marker has a plane through the ulp boxes of its three vertices.
 TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
   const TetMeshResult r = tet_mesh(d);
-  const CheckReport c = check_mesh(r.mesh, d);
-  EXPECT_TRUE(c.valid()) << what << "\n" << c.to_text();
-  EXPECT_EQ(r.mesh.face_markers.size(), r.mesh.faces.size());
-  std::set<int> used, input;
-  for (const Facet3& f : d.plc.facets) input.insert(f.marker);
-  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
-    const int m = r.mesh.face_markers[i];
-    used.insert(m);
-    bool on_some = false;
-    for (std::size_t f = 0; f < d.plc.facets.size() && !on_some; ++f) {
-      Vec3 a, b, e;
-      if (d.plc.facets[f].marker != m || !facet_plane(d, f, a, b, e)) continue;
-      bool all = true;
-      for (const int v : r.mesh.faces[i]) all = all && within_ulp_of_plane(r.mesh.vertices[v], a, b, e);
-      on_some = all;
-    }
-    EXPECT_TRUE(on_some) << what << ": boundary triangle " << i << " (marker " << m
-                         << ") is not within an ulp of a facet with that marker";
-    if (!on_some) break;
-  }
-  EXPECT_EQ(used, input) << what;
+  test::expect_valid_with_markers(what, r, d);
   std::printf("%-28s %zu tets, %zu vertices\n", what.c_str(), r.mesh.tetrahedra.size(), r.mesh.vertices.size());
   return r;
 }

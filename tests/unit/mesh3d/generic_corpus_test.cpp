@@ -1,17 +1,13 @@
 // tet_mesh with its defaults (generic grid, every box kind) on corpus models,
 // checked whole, and the geodesic grading of issue 5 item 6.
 //
-// Every run: check_mesh valid (volume, conformity, every facet recovered by
-// the boundary triangles); every boundary triangle carries the marker of a
-// facet whose plane passes through each of its vertices' ulp boxes
-// (within_ulp_of_plane, the checker's rule for rounded boundary points,
-// ALGORITHM.md §5), decided here independently of the mesher's own choice.
+// Every run: check_mesh valid and every boundary triangle's marker checked
+// against the facet planes (mesh_check_util.hpp).
 // Quality is printed, not asserted: without the first warping pass (§4.3)
 // the aspect ratio is not yet bounded by C / alpha (ALGORITHM.md §13).
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <set>
 #include <string>
 
 #include "../mv3d/octree_test_util.hpp"
@@ -21,45 +17,15 @@
 #include "pqmesh/read_domain.hpp"
 #include "pqmesh/tetmesh.hpp"
 #include "predicates/predicates.hpp"
+#include "mesh_check_util.hpp"
 #include "support/paths.hpp"
 
 namespace pqmesh {
 namespace {
 
-// Three non-collinear vertices of facet f's outer loop.
-bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {
-  const auto& loop = d.plc.facets[f].loops[0];
-  const auto& P = d.plc.vertices;
-  for (std::size_t k = 2; k < loop.size(); ++k) {
-    a = P[loop[0]], b = P[loop[1]], c = P[loop[k]];
-    if (norm(cross(b - a, c - a)) != 0) return true;
-  }
-  return false;
-}
-
 TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
   const TetMeshResult r = tet_mesh(d);
-  const CheckReport c = check_mesh(r.mesh, d);
-  EXPECT_TRUE(c.valid()) << what << "\n" << c.to_text();
-  EXPECT_EQ(r.mesh.face_markers.size(), r.mesh.faces.size());
-  std::set<int> used, input;
-  for (const Facet3& f : d.plc.facets) input.insert(f.marker);
-  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
-    const int m = r.mesh.face_markers[i];
-    used.insert(m);
-    bool on_some = false;
-    for (std::size_t f = 0; f < d.plc.facets.size() && !on_some; ++f) {
-      Vec3 a, b, e;
-      if (d.plc.facets[f].marker != m || !facet_plane(d, f, a, b, e)) continue;
-      bool all = true;
-      for (const int v : r.mesh.faces[i]) all = all && within_ulp_of_plane(r.mesh.vertices[v], a, b, e);
-      on_some = all;
-    }
-    EXPECT_TRUE(on_some) << what << ": boundary triangle " << i << " (marker " << m
-                         << ") is not within an ulp of a facet with that marker";
-    if (!on_some) break;
-  }
-  EXPECT_EQ(used, input) << what;
+  test::expect_valid_with_markers(what, r, d);
   const QualityReport q = quality_report(r.mesh);
   const TetMeshStats& s = r.stats;
   std::printf("%-18s %zu tets; jobs empty %lld, facet %lld, edge %lld, vertex %lld, two-facet %lld; "

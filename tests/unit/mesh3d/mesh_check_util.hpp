@@ -1,0 +1,58 @@
+#pragma once
+// The whole-mesh check every tet_mesh test runs: check_mesh valid (volume,
+// conformity, every facet recovered by boundary triangles), and every boundary
+// triangle carries the marker of a facet whose plane passes through each of
+// its vertices' ulp boxes (within_ulp_of_plane, the checker's rule for rounded
+// boundary points, ALGORITHM.md §5), decided here independently of the
+// mesher's own choice; every input marker is used.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::test {
+
+// Three non-collinear vertices of facet f's outer loop (exact: some
+// projection of the three points is not collinear).
+inline bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {
+  const auto& loop = d.plc.facets[f].loops[0];
+  const auto& P = d.plc.vertices;
+  for (std::size_t k = 2; k < loop.size(); ++k) {
+    a = P[loop[0]], b = P[loop[1]], c = P[loop[k]];
+    if (orient2d_projected(a, b, c, 0) != Sign::Zero || orient2d_projected(a, b, c, 1) != Sign::Zero ||
+        orient2d_projected(a, b, c, 2) != Sign::Zero)
+      return true;
+  }
+  return false;
+}
+
+inline void expect_valid_with_markers(const std::string& what, const TetMeshResult& r, const Domain3& d) {
+  const CheckReport c = check_mesh(r.mesh, d);
+  EXPECT_TRUE(c.valid()) << what << "\n" << c.to_text();
+  EXPECT_EQ(r.mesh.face_markers.size(), r.mesh.faces.size());
+  std::set<int> used, input;
+  for (const Facet3& f : d.plc.facets) input.insert(f.marker);
+  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
+    const int m = r.mesh.face_markers[i];
+    used.insert(m);
+    bool on_some = false;
+    for (std::size_t f = 0; f < d.plc.facets.size() && !on_some; ++f) {
+      Vec3 a, b, e;
+      if (d.plc.facets[f].marker != m || !facet_plane(d, f, a, b, e)) continue;
+      bool all = true;
+      for (const int v : r.mesh.faces[i]) all = all && within_ulp_of_plane(r.mesh.vertices[v], a, b, e);
+      on_some = all;
+    }
+    EXPECT_TRUE(on_some) << what << ": boundary triangle " << i << " (marker " << m
+                         << ") is not within an ulp of a facet with that marker";
+    if (!on_some) break;
+  }
+  EXPECT_EQ(used, input) << what;
+}
+
+}  // namespace pqmesh::test
