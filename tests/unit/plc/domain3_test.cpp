@@ -11,18 +11,7 @@ namespace {
 
 using test::add_box;
 using test::box;
-
-// Sum of (unsigned, double) triangle areas of one facet.
-double facet_area(const Domain3& d, int f) {
-  double a = 0;
-  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t)
-    if (d.facet_triangle_owner[t] == f) {
-      const auto& T = d.facet_triangles[t];
-      const Vec3 p = d.plc.vertices[T[0]], q = d.plc.vertices[T[1]], r = d.plc.vertices[T[2]];
-      a += 0.5 * norm(cross(q - p, r - p));
-    }
-  return a;
-}
+using test::facet_area;
 
 // Every facet triangle turns like its facet normal (outward).
 void expect_triangles_follow_normals(const Domain3& d) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 
 namespace pqmesh::test {
@@ -147,6 +148,18 @@ inline Plc3 uv_sphere(int rings, int sectors) {
       plc.facets.push_back(Facet3{{{at(i, j), at(i + 1, j + 1), at(i, j + 1)}}, 0});
     }
   return plc;
+}
+
+// Sum of the (unsigned, double) areas of facet f's triangles.
+inline double facet_area(const Domain3& d, int f) {
+  double a = 0;
+  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t)
+    if (d.facet_triangle_owner[t] == f) {
+      const auto& T = d.facet_triangles[t];
+      const Vec3 p = d.plc.vertices[T[0]], q = d.plc.vertices[T[1]], r = d.plc.vertices[T[2]];
+      a += 0.5 * norm(cross(q - p, r - p));
+    }
+  return a;
 }
 
 }  // namespace pqmesh::test

@@ -16,17 +16,6 @@ namespace {
 
 std::set<int> loop_set(const std::vector<int>& loop) { return {loop.begin(), loop.end()}; }
 
-double facet_area(const Domain3& d, int f) {
-  double a = 0;
-  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t)
-    if (d.facet_triangle_owner[t] == f) {
-      const auto& T = d.facet_triangles[t];
-      const Vec3 p = d.plc.vertices[T[0]], q = d.plc.vertices[T[1]], r = d.plc.vertices[T[2]];
-      a += 0.5 * norm(cross(q - p, r - p));
-    }
-  return a;
-}
-
 // Every vertex of the PLC lies on some facet loop.
 void expect_every_vertex_on_a_loop(const Domain3& d) {
   std::vector<char> on(d.plc.vertices.size(), 0);
@@ -62,7 +51,7 @@ TEST(MergeCoplanar, RingCapsBecomeAnnuli) {
   EXPECT_EQ(loop_set(bottom.loops[1]), (std::set<int>{4, 5, 6, 7}));
   EXPECT_EQ(loop_set(top.loops[0]), (std::set<int>{8, 9, 10, 11}));
   EXPECT_EQ(loop_set(top.loops[1]), (std::set<int>{12, 13, 14, 15}));
-  EXPECT_DOUBLE_EQ(facet_area(pieces, 0), 8.0);  // 3 x 3 minus 1 x 1
+  EXPECT_DOUBLE_EQ(test::facet_area(pieces, 0), 8.0);  // 3 x 3 minus 1 x 1
   EXPECT_EQ(pieces.facet_normals[0], (Vec3{0, 0, -1}));
   EXPECT_EQ(pieces.facet_normals[1], (Vec3{0, 0, 1}));
   // The file line of a merged facet is its first piece's.
@@ -107,7 +96,7 @@ TEST(MergeCoplanar, CollinearSplitPointsStayOnTheMergedLoop) {
   EXPECT_EQ(d.edges.size(), 14u);
   ASSERT_EQ(d.plc.facets[1].loops.size(), 1u);
   EXPECT_EQ(loop_set(d.plc.facets[1].loops[0]), (std::set<int>{4, 8, 5, 7, 9, 6}));
-  EXPECT_DOUBLE_EQ(facet_area(d, 1), 4.0);
+  EXPECT_DOUBLE_EQ(test::facet_area(d, 1), 4.0);
   EXPECT_EQ(d.volume, 8.0);
   expect_every_vertex_on_a_loop(d);
 }
