@@ -24,7 +24,9 @@
 namespace pqmesh::cdt2d::detail {
 
 void Triangulation::begin_constraints() {
+  cons_.reserve(tris_.capacity());  // room for refinement (triangulation.hpp)
   cons_.assign(tris_.size(), 0);
+  vtri_.reserve(pts_.capacity());
   vtri_.assign(pts_.size(), -1);
   for (int t = 0; t < triangle_count(); ++t) {
     if (is_ghost(t)) continue;

@@ -18,7 +18,9 @@ namespace pqmesh::cdt2d::detail {
 
 std::vector<std::uint8_t> Triangulation::inside_triangles() const {
   enum : std::uint8_t { kUnknown = 0, kInside = 1, kOutside = 2 };
-  std::vector<std::uint8_t> label(tris_.size(), kUnknown);
+  std::vector<std::uint8_t> label;
+  label.reserve(tris_.capacity());  // becomes inside_ of a refinement (triangulation.hpp)
+  label.assign(tris_.size(), kUnknown);
   std::vector<int> stack;
   auto piece_name = [](const std::array<int, 2>& pc) { return std::to_string(pc[0]) + "->" + std::to_string(pc[1]); };
   // A piece given in both directions has the inside on both sides (an

@@ -166,7 +166,7 @@ bool Refiner::collect_encroached(const Walk& w, Vec2 c) {
   encroached_.clear();
   cavity_.clear();
   if (stamp_.size() < static_cast<std::size_t>(tri_.triangle_count()))
-    stamp_.resize(static_cast<std::size_t>(tri_.triangle_count()) * 2, 0);
+    stamp_.resize(static_cast<std::size_t>(tri_.triangle_count()) + tri_.triangle_count() / 8 + 64, 0);
   ++stamp_now_;
   auto visit = [&](int t) {
     stamp_[static_cast<std::size_t>(t)] = stamp_now_;
@@ -374,9 +374,18 @@ void Refiner::run(RefineResult& out) {
 
 }  // namespace detail
 
-RefineResult refine_constrained_delaunay(const CdtInput& in, const RefineOptions& options,
-                                         const SegmentSupport& support) {
-  const int n = static_cast<int>(in.points.size());
+std::size_t new_point_allowance(std::size_t n, const RefineOptions& options) {
+  const std::size_t cap = options.max_new_points != 0 ? options.max_new_points : 2 * n;
+  return std::min(cap, n / 8 + 1024);
+}
+
+namespace {
+
+// refine_constrained_delaunay with the input points given separately (pts is
+// in.points, copied or moved; in.points is not read).
+RefineResult refine(const CdtInput& in, std::vector<Vec2> pts, const RefineOptions& options,
+                    const SegmentSupport& support) {
+  const int n = static_cast<int>(pts.size());
   for (std::size_t c = 0; c < in.constraints.size(); ++c) {
     const auto [a, b] = in.constraints[c];
     if (a < 0 || a >= n || b < 0 || b >= n || a == b)
@@ -390,7 +399,8 @@ RefineResult refine_constrained_delaunay(const CdtInput& in, const RefineOptions
         throw InternalError("refine_constrained_delaunay: segment id " + std::to_string(s) + " out of range");
   }
   RefineResult out;
-  std::vector<Vec2> pts = in.points;
+  const std::size_t allowance = new_point_allowance(pts.size(), options);
+  pts.reserve(pts.size() + allowance);
   {
     detail::Triangulation tri(pts);
     if (tri.build_delaunay() && !in.constraints.empty()) {
@@ -412,6 +422,21 @@ RefineResult refine_constrained_delaunay(const CdtInput& in, const RefineOptions
   }
   out.points = std::move(pts);
   return out;
+}
+
+}  // namespace
+
+RefineResult refine_constrained_delaunay(const CdtInput& in, const RefineOptions& options,
+                                         const SegmentSupport& support) {
+  std::vector<Vec2> pts;
+  pts.reserve(in.points.size() + new_point_allowance(in.points.size(), options));
+  pts.assign(in.points.begin(), in.points.end());
+  return refine(in, std::move(pts), options, support);
+}
+
+RefineResult refine_constrained_delaunay(CdtInput&& in, const RefineOptions& options, const SegmentSupport& support) {
+  std::vector<Vec2> pts = std::move(in.points);
+  return refine(in, std::move(pts), options, support);
 }
 
 }  // namespace pqmesh::cdt2d

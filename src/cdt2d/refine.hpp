@@ -117,6 +117,17 @@ struct SegmentSupport {
 
 RefineResult refine_constrained_delaunay(const CdtInput& in, const RefineOptions& options = {},
                                          const SegmentSupport& support = {});
+// The same, taking the input's points instead of copying them (in.points is
+// left empty; the result's points start with them). Give in.points a capacity
+// of n + new_point_allowance(n, options) to spare it a reallocation.
+RefineResult refine_constrained_delaunay(CdtInput&& in, const RefineOptions& options = {},
+                                         const SegmentSupport& support = {});
+
+// An allowance for the points refinement adds, not a limit: the point,
+// triangle and vertex arrays are reserved for this many more than the n input
+// points, so the usual handful of new points never reallocates (copies) them.
+// Reserve that is never touched costs address space only.
+std::size_t new_point_allowance(std::size_t n, const RefineOptions& options);
 
 // Rounds p (a point constructed near the segment ab) onto it: moves p by
 // single ulps towards the line ab along the axis where the line's normal has

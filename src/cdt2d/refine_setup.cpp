@@ -46,6 +46,7 @@ int Refiner::origin_of(int u, int v) const {
 // double: this only classifies (which triangles are excused, where to split).
 void Refiner::build_sharp_vertices() {
   sharp_.assign(static_cast<std::size_t>(n_in_), 0);
+  vgroup_.reserve(pts_.capacity());  // grows with pts_
   vgroup_.assign(static_cast<std::size_t>(n_in_), -1);
   struct Dir {
     int v;
@@ -107,6 +108,9 @@ void Refiner::build_sharp_vertices() {
 // Steiner points of the piece's canonical origin (at an input vertex in the
 // middle of a constraint, the neighbour that lies towards v: dot_sign < 0).
 void Refiner::output(RefineResult& out) const {
+  std::size_t inside = 0;  // counted first: one allocation, no copies while growing
+  for (int t = 0; t < tri_.triangle_count(); ++t) inside += !tri_.is_ghost(t) && tri_.inside(t);
+  out.triangles.reserve(inside);
   for (int t = 0; t < tri_.triangle_count(); ++t) {
     if (tri_.is_ghost(t) || !tri_.inside(t)) continue;
     const auto& v = tri_.tri(t).v;

@@ -40,11 +40,14 @@ class Refiner {
  public:
   Refiner(const CdtInput& in, const RefineOptions& opt, const SegmentSupport& sup, std::vector<Vec2>& pts,
           Triangulation& tri, std::vector<std::size_t> piece_begin)
-      : in_(in), sup_(sup), pts_(pts), tri_(tri), piece_begin_(std::move(piece_begin)), n_in_(static_cast<int>(in.points.size())) {
-    cap_ = opt.max_new_points != 0 ? opt.max_new_points : 2 * in.points.size();
+      : in_(in), sup_(sup), pts_(pts), tri_(tri), piece_begin_(std::move(piece_begin)), n_in_(static_cast<int>(pts.size())) {
+    // pts holds exactly the input points here (in.points may have been moved
+    // into it); only in.constraints is read later.
+    cap_ = opt.max_new_points != 0 ? opt.max_new_points : 2 * pts.size();
     const double th = opt.min_angle_degrees * std::numbers::pi / 180.0;
     cos_target_ = std::cos(th);
     off_factor_ = opt.off_centers ? 0.475 / std::tan(th / 2) : std::numeric_limits<double>::infinity();
+    seg_of_.reserve(pts_.capacity());  // grows with pts_, within its reserve (refine.cpp)
     seg_of_.assign(pts_.size(), -1);
     build_piece_origins();
     build_sharp_vertices();

@@ -89,7 +89,7 @@ bool Triangulation::build_delaunay() {
     check_duplicates_sorted(pts_);
     return false;
   }
-  tris_.reserve(2 * static_cast<std::size_t>(n) + 2);
+  tris_.reserve(2 * pts_.capacity() + 2);  // capacity: see triangulation.hpp
   if (turn == Sign::Positive)
     make_first_triangle(p0, p1, id(third));
   else

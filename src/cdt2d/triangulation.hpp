@@ -25,7 +25,10 @@
 //
 // Triangle slots are never freed: a 1-3 split adds two, a 2-4 split adds two,
 // a flip reuses its two slots. With n points and the ghost the sphere has
-// 2 (n + 1) - 4 triangles at the end, reserved up front.
+// 2 (n + 1) - 4 triangles at the end. The per-triangle and per-vertex arrays
+// are reserved up front for the point array's capacity, not its size: a
+// refinement gives its points room to grow (refine.cpp), and its few new
+// points then never reallocate (copy, and touch anew) the large arrays.
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -103,6 +103,30 @@ std::vector<int> vertex_order(const std::vector<Vec2>& pts) {
   return order;
 }
 
+// Whether two vertices have exactly the same coordinates: one pass over an
+// open-addressing table of vertex ids (linear probing, at most half full),
+// comparing coordinates exactly on every probe. Linear in the vertex count
+// and much cheaper than the coordinate sort, which is only needed to report
+// the coincident groups when there are some.
+bool has_coincident_vertices(const std::vector<Vec2>& pts) {
+  std::size_t size = 16;
+  while (size < 2 * pts.size()) size *= 2;
+  const std::size_t mask = size - 1;
+  std::vector<int> table(size, -1);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Vec2 p = pts[i];
+    for (std::size_t s = coordinate_hash(p) & mask;; s = (s + 1) & mask) {
+      const int id = table[s];
+      if (id < 0) {
+        table[s] = static_cast<int>(i);
+        break;
+      }
+      if (pts[static_cast<std::size_t>(id)] == p) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Checker2::Checker2(const TriMesh2& mesh, const CheckOptions& options, CheckReport& report)
@@ -118,7 +142,8 @@ bool Checker2::run_topology() {
     sink_.note("orientation, conformity and domain checks skipped: the mesh has bad indices or coordinates");
     return false;
   }
-  order_ = vertex_order(m_.vertices);
+  coincident_ = has_coincident_vertices(m_.vertices);
+  if (coincident_) order_ = vertex_order(m_.vertices);
   if (!stage2_orientation()) {
     sink_.note("conformity and domain checks skipped: not every triangle is positively oriented");
     return false;

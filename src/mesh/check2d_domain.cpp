@@ -156,8 +156,34 @@ void Checker2::map_input_vertices(const Domain2& d) {
   for (const auto& loop : d.loops)
     for (int v : loop)
       if (v >= 0 && v < static_cast<int>(pv.size())) referenced[v] = 1;
-  const int unreferenced =
-      map_input_vertices_by_coordinates(sink_, m_.vertices, order_, pv, referenced, in2mesh_, mesh2in_);
+  int unreferenced = 0;
+  if (coincident_) {
+    unreferenced = map_input_vertices_by_coordinates(sink_, m_.vertices, order_, pv, referenced, in2mesh_, mesh2in_);
+  } else {
+    // No two mesh vertices coincide: the mesh vertex at an input vertex's
+    // coordinates is unique. One scan of the mesh vertices against a hash
+    // table of the input vertices (first of equal ones; exact comparisons).
+    std::size_t size = 16;
+    while (size < 2 * pv.size()) size *= 2;
+    const std::size_t mask = size - 1;
+    std::vector<int> table(size, -1), first(pv.size()), at(pv.size(), -1);
+    auto slot = [&](Vec2 p) {
+      std::size_t s = coordinate_hash(p) & mask;
+      while (table[s] >= 0 && !(pv[static_cast<std::size_t>(table[s])] == p)) s = (s + 1) & mask;
+      return s;
+    };
+    for (std::size_t i = 0; i < pv.size(); ++i) {
+      const std::size_t s = slot(pv[i]);
+      if (table[s] < 0) table[s] = static_cast<int>(i);
+      first[i] = table[s];
+    }
+    for (std::size_t v = 0; v < m_.vertices.size(); ++v) {
+      const int i = table[slot(m_.vertices[v])];
+      if (i >= 0) at[static_cast<std::size_t>(i)] = static_cast<int>(v);
+    }
+    unreferenced = map_input_vertices_with(sink_, m_.vertices.size(), pv, referenced, in2mesh_, mesh2in_,
+                                           [&](std::size_t i) { return at[static_cast<std::size_t>(first[i])]; });
+  }
   if (unreferenced)
     sink_.note(std::to_string(unreferenced) + " input vertices on no segment were not required to be mesh vertices");
 }

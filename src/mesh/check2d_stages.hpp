@@ -10,6 +10,8 @@
 //                         against the loops, Steiner points, locate()
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "mesh/check_common.hpp"
@@ -32,6 +34,20 @@ inline bool on_segment(Vec2 p, Vec2 a, Vec2 b) { return in_box(p, a, b) && orien
 // Rounded Steiner points on slanted segments: see within_ulp_of_segment in
 // src/predicates/predicates.hpp and docs/ALGORITHM.md §5.
 inline bool near_segment(Vec2 p, Vec2 a, Vec2 b) { return within_ulp_of_segment(p, a, b); }
+
+// A hash of a point's exact coordinates: equal points (also with -0 against
+// +0) hash equally. It only places points in hash tables, whose lookups then
+// compare coordinates exactly; no decision depends on its value.
+inline std::uint64_t coordinate_hash(Vec2 p) {
+  auto mix = [](std::uint64_t h) {
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 29;
+    h *= 0x94D049BB133111EBull;
+    return h ^ (h >> 32);
+  };
+  return mix(mix(std::bit_cast<std::uint64_t>(p.x + 0.0)) ^ std::bit_cast<std::uint64_t>(p.y + 0.0));  // -0 + 0 = +0
+}
 
 class Checker2 {
  public:
@@ -65,11 +81,15 @@ class Checker2 {
   CheckReport& rep_;
   IssueSink sink_;
   bool stage1_ok_ = false;
+  // The vertex ids by coordinates (sort_by_coordinates), computed only when
+  // two vertices coincide (a hash table finds out, check2d.cpp): then the
+  // coincident groups are reported in that order and input vertices are
+  // looked up in it. Otherwise every point is one vertex, found by a scan.
+  bool coincident_ = false;
   std::vector<int> order_;
   std::vector<std::array<int, 2>> boundary_;  // directed, triangle on the left
   std::vector<int> boundary_tri_;
-  std::vector<std::array<int, 2>> all_edges_;  // unique, (lo, hi), sorted
-  Adjacency adjacency_, boundary_adjacency_;
+  Adjacency adjacency_, boundary_adjacency_;  // adjacency_: every mesh edge, lists sorted
   std::vector<int> in2mesh_, mesh2in_;
   std::vector<int> chain_offset_, chain_items_;
   std::vector<char> segment_ok_;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -76,31 +77,6 @@ void Checker2::measure_area() {
 
 // ---- stage 3 -------------------------------------------------------------
 
-namespace {
-
-// make_adjacency (check_common.hpp) for edges that are distinct pairs (lo, hi),
-// lo < hi, sorted: the neighbours of v arrive in increasing order (first the
-// w < v of the edges (w, v), by w, then the w > v of the edges (v, w), by w),
-// so the lists come out sorted and without repeats with no sorting.
-Adjacency sorted_adjacency(int n, const std::vector<std::array<int, 2>>& edges) {
-  Adjacency adj;
-  adj.offset.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (const auto& e : edges) {
-    ++adj.offset[static_cast<std::size_t>(e[0]) + 1];
-    ++adj.offset[static_cast<std::size_t>(e[1]) + 1];
-  }
-  for (std::size_t v = 0; v < static_cast<std::size_t>(n); ++v) adj.offset[v + 1] += adj.offset[v];
-  adj.items.resize(static_cast<std::size_t>(adj.offset[static_cast<std::size_t>(n)]));
-  std::vector<int> fill(adj.offset.begin(), adj.offset.end() - 1);
-  for (const auto& e : edges) {
-    adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
-    adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
-  }
-  return adj;
-}
-
-}  // namespace
-
 bool Checker2::stage3_edges() {
   const int nv = static_cast<int>(m_.vertices.size());
   const int nt = static_cast<int>(m_.triangles.size());
@@ -126,10 +102,15 @@ bool Checker2::stage3_edges() {
     }
   }
   // Each vertex's records sorted by (hi, code): most lists are a handful of
-  // records (insertion sort), a long fan goes to std::sort. Then the distinct
-  // edges are counted, so that all_edges is allocated once.
+  // records (insertion sort), a long fan goes to std::sort. The distinct
+  // edges (a, b), a < b, are counted per vertex for the adjacency, which is
+  // then filled in the order (a, b) of the edges: the neighbours of v arrive
+  // in increasing order (first the w < v of the edges (w, v), by w, then the
+  // w > v of the edges (v, w), by w), so the lists come out sorted and
+  // without repeats with no sorting.
   const auto rec_less = [](const Rec& x, const Rec& y) { return x.hi != y.hi ? x.hi < y.hi : x.code < y.code; };
-  std::size_t distinct = 0;
+  Adjacency adj;
+  adj.offset.assign(static_cast<std::size_t>(nv) + 1, 0);
   for (int a = 0; a < nv; ++a) {
     const auto first = recs.begin() + start[a], last = recs.begin() + start[a + 1];
     if (last - first > 16) {
@@ -138,10 +119,15 @@ bool Checker2::stage3_edges() {
       for (auto i = first + (first != last); i < last; ++i)
         for (auto j = i; j != first && rec_less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
     }
-    for (auto it = first; it != last; ++it) distinct += (it == first || it->hi != (it - 1)->hi) ? 1 : 0;
+    for (auto it = first; it != last; ++it)
+      if (it == first || it->hi != (it - 1)->hi) {
+        ++adj.offset[static_cast<std::size_t>(a) + 1];
+        ++adj.offset[static_cast<std::size_t>(it->hi) + 1];
+      }
   }
-  std::vector<std::array<int, 2>> all_edges;
-  all_edges.reserve(distinct);
+  for (std::size_t v = 0; v < static_cast<std::size_t>(nv); ++v) adj.offset[v + 1] += adj.offset[v];
+  adj.items.resize(static_cast<std::size_t>(adj.offset[static_cast<std::size_t>(nv)]));
+  std::vector<int> fill(adj.offset.begin(), adj.offset.end() - 1);
   for (int a = 0; a < nv; ++a) {
     auto first = recs.begin() + start[a], last = recs.begin() + start[a + 1];
     for (auto it = first; it != last;) {
@@ -149,7 +135,8 @@ bool Checker2::stage3_edges() {
       while (run_end != last && run_end->hi == it->hi) ++run_end;
       const long count = run_end - it;
       const int b = it->hi;
-      all_edges.push_back({a, b});
+      adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+      adj.items[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
       if (count == 1) {
         const bool reversed = (it->code & 1u) != 0;
         boundary_.push_back(reversed ? std::array<int, 2>{b, a} : std::array<int, 2>{a, b});
@@ -177,9 +164,9 @@ bool Checker2::stage3_edges() {
     }
   }
   recs = {};
+  fill = {};
   rep_.boundary_faces = static_cast<std::int64_t>(boundary_.size());
-  adjacency_ = sorted_adjacency(nv, all_edges);
-  all_edges_ = std::move(all_edges);
+  adjacency_ = std::move(adj);
 
   report_unused_vertices(sink_, m_.vertices, m_.triangles, "triangle");
   report_coincident_vertices(sink_, m_.vertices, order_);
@@ -238,7 +225,7 @@ void Checker2::find_hanging_vertices() {
 // is listed. Direction is not prescribed.
 void Checker2::check_listed_edges() {
   if (m_.edges.empty()) return;
-  // Listed edges as (lo, hi, index), sorted; all_edges_ is sorted and unique,
+  // Listed edges as (lo, hi, index), sorted; the adjacency lists are sorted,
   // so both directions are binary searches (no sort of every mesh edge).
   std::vector<std::array<int, 3>> listed;
   listed.reserve(m_.edges.size());
@@ -259,7 +246,8 @@ void Checker2::check_listed_edges() {
     const int l = listed[k][2];
     const std::string head = "listed edge " + std::to_string(l) + " (" + format_ids(m_.edges[l]) + ") ";
     const std::array<int, 2> key{listed[k][0], listed[k][1]};
-    if (!std::binary_search(all_edges_.begin(), all_edges_.end(), key))
+    const std::span<const int> around = adjacency_.of(key[0]);
+    if (!std::binary_search(around.begin(), around.end(), key[1]))
       sink_.add(CheckKind::BoundaryFace, {l}, head + "is not an edge of the mesh");
     else if (k > 0 && listed[k - 1][0] == key[0] && listed[k - 1][1] == key[1])
       sink_.add(CheckKind::BoundaryFace, {l}, head + "is listed more than once");

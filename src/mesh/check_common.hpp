@@ -173,16 +173,17 @@ bool search_hanging_vertices(const Adjacency& adj, std::span<const int> corners,
 // (or -1), mesh2in the inverse (or -1); MissingVertex for every referenced
 // input vertex that is no mesh vertex. Returns the number of unreferenced
 // input vertices (not required to be mesh vertices).
-template <class V>
-int map_input_vertices_by_coordinates(IssueSink& sink, const std::vector<V>& mesh_points,
-                                      const std::vector<int>& order,
-                                      const std::vector<V>& input, const std::vector<char>& referenced,
-                                      std::vector<int>& in2mesh, std::vector<int>& mesh2in) {
+// find(i) gives the mesh vertex at input vertex i's coordinates, as
+// find_vertex would (the overload below uses find_vertex itself).
+template <class V, class Find>
+int map_input_vertices_with(IssueSink& sink, std::size_t mesh_vertices, const std::vector<V>& input,
+                            const std::vector<char>& referenced, std::vector<int>& in2mesh, std::vector<int>& mesh2in,
+                            Find find) {
   in2mesh.assign(input.size(), -1);
-  mesh2in.assign(mesh_points.size(), -1);
+  mesh2in.assign(mesh_vertices, -1);
   int unreferenced = 0;
   for (std::size_t i = 0; i < input.size(); ++i) {
-    const int mv = find_vertex(mesh_points, order, input[i]);
+    const int mv = find(i);
     in2mesh[i] = mv;
     if (mv >= 0) mesh2in[mv] = static_cast<int>(i);
     if (!referenced[i]) {
@@ -194,6 +195,14 @@ int map_input_vertices_by_coordinates(IssueSink& sink, const std::vector<V>& mes
                "input vertex " + std::to_string(i) + " at " + format_point(input[i]) + " is not a mesh vertex");
   }
   return unreferenced;
+}
+template <class V>
+int map_input_vertices_by_coordinates(IssueSink& sink, const std::vector<V>& mesh_points,
+                                      const std::vector<int>& order,
+                                      const std::vector<V>& input, const std::vector<char>& referenced,
+                                      std::vector<int>& in2mesh, std::vector<int>& mesh2in) {
+  return map_input_vertices_with(sink, mesh_points.size(), input, referenced, in2mesh, mesh2in,
+                                 [&](std::size_t i) { return find_vertex(mesh_points, order, input[i]); });
 }
 
 // Stage 4: the walk of an input edge (segment) from mesh vertex a to mesh

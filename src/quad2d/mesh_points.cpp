@@ -5,6 +5,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -70,6 +72,22 @@ struct WideCorners {
     radix_sort(v, g.ybits + 1, [](Key k) { return k.j; }, scratch);
     radix_sort(v, g.xbits, [](Key k) { return k.i; }, scratch);
   }
+};
+
+// A zero-filled byte array from calloc, which hands out fresh (untouched,
+// zero) pages for large sizes: memory is committed only where written.
+class ZeroedBytes {
+ public:
+  explicit ZeroedBytes(std::size_t n) : p_(static_cast<std::uint8_t*>(std::calloc(n, 1))) {
+    if (p_ == nullptr) throw std::bad_alloc();
+  }
+  ~ZeroedBytes() { std::free(p_); }
+  ZeroedBytes(const ZeroedBytes&) = delete;
+  ZeroedBytes& operator=(const ZeroedBytes&) = delete;
+  std::uint8_t& operator[](std::size_t i) const { return p_[i]; }
+
+ private:
+  std::uint8_t* p_;
 };
 
 struct Tagged {
@@ -210,7 +228,9 @@ class PointGenerator {
 
   MeshPoints run() {
     make_grid();
-    if (grid_.xbits + grid_.ybits + 1 <= 64)
+    if (grid_.xbits + grid_.ybits <= kMaxDirectBits)
+      direct_corner_phase();
+    else if (grid_.xbits + grid_.ybits + 1 <= 64)
       corner_phase(NarrowCorners{grid_});
     else
       corner_phase(WideCorners{grid_});
@@ -255,6 +275,74 @@ class PointGenerator {
     grid_.inv_unit = 1 / grid_.unit;  // exact: a power of two
     grid_.xbits = bit_width64(grid_.ix(x1));
     grid_.ybits = bit_width64(grid_.iy(y1));
+  }
+
+  // corner_phase without sorting, when the corner grid has at most
+  // 2^kMaxDirectBits points: one byte per grid point, (records << 1) | busy,
+  // where records counts the (leaf, corner) pairs at the point (saturating at
+  // 127, so 4 means exactly 4) and busy is the or of their busy flags, the
+  // same facts the sorted runs of corner_phase give. The grid is allocated
+  // zeroed but untouched (calloc: fresh pages), so only the rows that hold
+  // corners cost memory. Scanning the used rows in order gives the distinct
+  // corners by (x, y), and a counting sort on y within that scan gives them by
+  // (y, x); the corners are then placed in (x, y) order, as corner_phase does.
+  static constexpr int kMaxDirectBits = 26;
+  void direct_corner_phase() {
+    const int yb = grid_.ybits;
+    const std::size_t rows = std::size_t{1} << grid_.xbits, cols = std::size_t{1} << yb;
+    const ZeroedBytes cells(rows * cols);
+    std::vector<std::uint8_t> row_used(rows, 0);
+    std::vector<std::size_t> per_y(cols + 1, 0);  // distinct corners per iy, then the start of each iy in by_y_
+    std::size_t distinct = 0;
+    for (const std::int32_t n : leaves_) {
+      const NodeData& nd = b_.data(n);
+      const std::uint8_t busy = !nd.square_edges.empty() || nd.vertex_owner >= 0 ? 1 : 0;
+      const Square s = b_.square(n);
+      const std::uint64_t i = grid_.ix(s.lo.x), j = grid_.iy(s.lo.y), w = grid_.ix(s.lo.x + s.side) - i;
+      for (int k = 0; k < 4; ++k) {
+        const std::uint64_t ci = i + static_cast<std::uint64_t>(k & 1) * w, cj = j + static_cast<std::uint64_t>(k >> 1) * w;
+        std::uint8_t& c = cells[(ci << yb) | cj];
+        if (c == 0) {
+          ++distinct;
+          ++per_y[cj + 1];
+          row_used[ci] = 1;
+        }
+        c = static_cast<std::uint8_t>((c >> 1 < 127 ? c + 2 : c) | busy);
+      }
+    }
+    for (std::size_t y = 0; y < cols; ++y) per_y[y + 1] += per_y[y];
+    by_x_.reserve(distinct);
+    by_y_.resize(distinct);
+    for (std::size_t i = 0; i < rows; ++i) {
+      if (!row_used[i]) continue;
+      const std::uint8_t* row = &cells[i << yb];
+      for (std::size_t j = 0; j < cols; ++j) {
+        if (row[j] == 0) continue;
+        const Vec2 p = grid_.point(i, j);
+        by_x_.push_back(p);
+        by_y_[per_y[j]++] = p;
+      }
+    }
+    find_crossings();
+    memo_ = CrossingMemo{};
+    release(by_x_);
+    release(by_y_);
+    plain_.reserve(distinct);
+    std::vector<int> segs;
+    for (std::size_t i = 0; i < rows; ++i) {
+      if (!row_used[i]) continue;
+      const std::uint8_t* row = &cells[i << yb];
+      for (std::size_t j = 0; j < cols; ++j) {
+        const std::uint8_t c = row[j];
+        if (c == 0) continue;
+        // Fast path of place_corners: a corner of four leaves, none busy.
+        if (c == (4 << 1))
+          plain_.push_back(grid_.point(i, j));
+        else
+          place_corner(grid_.point(i, j), segs);
+      }
+    }
+    std::sort(snaps_.begin(), snaps_.end());
   }
 
   // Every leaf corner (once per leaf) sorted by (x, y); the distinct corners

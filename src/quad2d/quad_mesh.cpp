@@ -41,18 +41,20 @@ std::uint64_t morton(std::uint32_t x, std::uint32_t y) { return spread21(x) | (s
 std::vector<int> z_order(const std::vector<Vec2>& pts, Vec2 lo, Vec2 hi) {
   const double span = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
   const double scale = static_cast<double>((1u << 21) - 1) / span;
-  std::vector<std::pair<std::uint64_t, int>> keyed(pts.size());
+  std::vector<std::pair<std::uint64_t, int>> keyed;
+  keyed.reserve(pts.size());  // filled in order: no zeroing pass
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto qx = static_cast<std::uint32_t>(std::clamp((pts[i].x - lo.x) * scale, 0.0, 2097151.0));
     const auto qy = static_cast<std::uint32_t>(std::clamp((pts[i].y - lo.y) * scale, 0.0, 2097151.0));
-    keyed[i] = {morton(qx, qy), static_cast<int>(i)};
+    keyed.push_back({morton(qx, qy), static_cast<int>(i)});
   }
   // Points are sorted by (x, y) already, so ties by index are ties by
   // coordinates; the radix sort is stable, which keeps ties in index order.
   std::vector<std::pair<std::uint64_t, int>> scratch;
   quad2d::radix_sort(keyed, 42, [](const std::pair<std::uint64_t, int>& k) { return k.first; }, scratch);
-  std::vector<int> order(pts.size());
-  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+  std::vector<int> order;
+  order.reserve(keyed.size());
+  for (const auto& k : keyed) order.push_back(k.second);
   return order;
 }
 
@@ -71,15 +73,16 @@ bool region_attribute(const Domain2& d, int& attribute) {
 // side as the chain of its points, interior on the left. new_id maps a
 // MeshPoints index to its mesh id; constraint_segment gives each constraint's
 // input segment.
-cdt2d::CdtInput ordered_input(const Domain2& domain, const quad2d::MeshPoints& mp, std::vector<int>& new_id,
-                              std::vector<int>& constraint_segment) {
+// The point array has room for `spare` more points (the refinement's).
+cdt2d::CdtInput ordered_input(const Domain2& domain, const quad2d::MeshPoints& mp, std::size_t spare,
+                              std::vector<int>& new_id, std::vector<int>& constraint_segment) {
   const std::vector<int> order = z_order(mp.points, domain.bbox_min, domain.bbox_max);
   new_id.assign(order.size(), -1);
   cdt2d::CdtInput in;
-  in.points.resize(order.size());
+  in.points.reserve(order.size() + spare);
   for (std::size_t i = 0; i < order.size(); ++i) {
     new_id[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
-    in.points[i] = mp.points[static_cast<std::size_t>(order[i])];
+    in.points.push_back(mp.points[static_cast<std::size_t>(order[i])]);
   }
   for (std::size_t l = 0; l < domain.loops.size(); ++l) {
     const auto& loop = domain.loops[l];
@@ -96,6 +99,14 @@ cdt2d::CdtInput ordered_input(const Domain2& domain, const quad2d::MeshPoints& m
     }
   }
   return in;
+}
+
+// The refinement's options for n points.
+cdt2d::RefineOptions refine_options(const QuadMeshOptions& options, std::size_t n) {
+  cdt2d::RefineOptions ro;
+  ro.min_angle_degrees = options.refine_angle_degrees;
+  ro.max_new_points = std::max<std::size_t>(n, 1000);
+  return ro;
 }
 
 // The constrained Delaunay triangulation of the points, refined when asked
@@ -119,10 +130,8 @@ void triangulate(const Domain2& domain, cdt2d::CdtInput in, const std::vector<in
   for (const auto& seg : domain.pslg.segments)
     support.segment_ends.push_back(
         {domain.pslg.vertices[static_cast<std::size_t>(seg[0])], domain.pslg.vertices[static_cast<std::size_t>(seg[1])]});
-  cdt2d::RefineOptions ro;
-  ro.min_angle_degrees = options.refine_angle_degrees;
-  ro.max_new_points = std::max<std::size_t>(in.points.size(), 1000);
-  cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(in, ro, support);
+  const cdt2d::RefineOptions ro = refine_options(options, in.points.size());
+  cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(std::move(in), ro, support);
   stats.refine_points = static_cast<std::int64_t>(rr.inserted);
   stats.refine_target_reached = rr.target_reached;
   mesh.vertices = std::move(rr.points);
@@ -175,7 +184,10 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
 
   t0 = Clock::now();
   std::vector<int> new_id, constraint_segment, piece_segment;
-  cdt2d::CdtInput in = ordered_input(domain, mp, new_id, constraint_segment);
+  const std::size_t n = mp.points.size();
+  const std::size_t spare =
+      options.refine_angle_degrees > 0 ? cdt2d::new_point_allowance(n, refine_options(options, n)) : 0;
+  cdt2d::CdtInput in = ordered_input(domain, mp, spare, new_id, constraint_segment);
   triangulate(domain, std::move(in), constraint_segment, options, stats, result.mesh, piece_segment);
   stats.seconds_triangulate = seconds_since(t0);
   assign_markers(domain, mp, new_id, piece_segment, result.mesh);

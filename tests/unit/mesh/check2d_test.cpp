@@ -249,6 +249,45 @@ TEST(Check2d, DuplicateVertexCoordinates) {
   EXPECT_TRUE(dup) << r.to_text();
 }
 
+TEST(Check2d, SignedZerosAreOneCoordinate) {
+  // -0 and +0 are the same coordinate: the mesh's (-0, -0) and (1, -0) are
+  // the domain's (0, 0) and (1, 0) (input vertices are found by exact
+  // coordinates, also without a coordinate sort), and an added vertex
+  // (-0, 0) coincides with vertex 0.
+  TriMesh2 m = square2();
+  m.vertices[0] = {-0.0, -0.0};
+  m.vertices[1] = {1, -0.0};
+  EXPECT_TRUE(check_mesh(m, unit_square()).valid()) << check_mesh(m, unit_square()).to_text();
+  m.vertices.push_back({-0.0, 0.0});
+  m.triangles.push_back({4, 1, 2});  // (4, 1, 2) repeats triangle 0 through the copy of vertex 0
+  const CheckReport r = check_mesh(m, unit_square());
+  bool dup = false;
+  for (const auto& i : r.issues)
+    if (i.kind == CheckKind::NonConforming && i.ids == std::vector<std::int64_t>{0, 4}) dup = true;
+  EXPECT_TRUE(dup) << r.to_text();
+}
+
+TEST(Check2d, ManyVerticesNoneCoincide) {
+  // A 60 x 60 grid of squares, two triangles each: every vertex distinct, so
+  // the checker's hash table (not the coordinate sort) decides; the mesh is
+  // valid and every corner of the domain is found.
+  constexpr int n = 60;
+  TriMesh2 m;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) m.vertices.push_back({j / double(n), i / double(n)});
+  auto id = [](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  const CheckReport r = check_mesh(m, unit_square());
+  EXPECT_TRUE(r.valid()) << r.to_text();
+  EXPECT_EQ(r.boundary_faces, 4 * n);
+  m.vertices[static_cast<std::size_t>(id(n, n))] = {1, 1 - 1.0 / (4 * n)};  // moves the corner (1, 1) off it
+  EXPECT_EQ(check_mesh(m, unit_square()).count(CheckKind::MissingVertex), 1);
+}
+
 TEST(Check2d, InconsistentDomainThrows) {
   Domain2 d = unit_square();
   d.pslg.segments.pop_back();  // the loop side (3 0) is no longer a segment
