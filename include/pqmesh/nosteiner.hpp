@@ -122,7 +122,11 @@ struct VertexWedge {
   double phi_x = 0;                             // where S and T meet (Kept::Both)
   bool small_side_fixed = false;                // the fix of §5.1.1 for a one-triangle side was applied
   double phi_x_moved = 0, log_rho_x_moved = 0;  // X after the fix (= X without it), Kept::Both
-  int thirds_first = -1;                        // index of the first of the two spokes of Fig. 5.10 (length |VX|)
+  // Index of the first of the two spokes of Fig. 5.10 (length |VX|); -1 when
+  // there are none (Kept::NextOnly / PrevOnly: one spiral covers the corner)
+  // and after polygon_q's spoke floor re-spaced a run of spokes (the indices
+  // no longer name Fig. 5.10's spokes; docs/ALGORITHM.md §11.7, spoke_floor.hpp).
+  int thirds_first = -1;
   std::vector<WedgeSpoke> spokes;               // phi increasing from 0 (on E) to alpha (on F)
   double min_angle = 0;                         // over the triangles (V, spoke_i, spoke_i+1), from polar data
   bool representable = true;                    // every spoke point is distinct from V and the next spoke
@@ -140,7 +144,13 @@ struct PolygonQ {
   std::vector<std::vector<int>> loops;     // dQ, one loop per input loop, ids into wedges.vertices,
                                            // interior of Q on the left
   std::vector<VertexWedge> vertex_wedges;  // after the rotations, in loop order
-  bool representable = true;               // every wedge triangle keeps its orientation after rounding (see the draft)
+  // Every wedge triangle keeps its orientation after rounding (exact
+  // orient2d on the rounded spoke ends). Since the spoke floor (polygon_q
+  // raises every spoke to >= delta_P(V)/16, docs/ALGORITHM.md §11.7) the
+  // spokes no longer shrink below double resolution, and this holds on every
+  // test input (data/2d, the hard cases, 300 random polygons); when it does
+  // not, the pipeline falls back to the CDT of P and says so.
+  bool representable = true;
   double min_angle = 0;                    // smallest angle of Q^c (floating point)
 };
 
@@ -308,6 +318,12 @@ struct NoSteinerOptions {
   // Measured (docs/ALGORITHM.md §11.12): the pipeline is below the CDT on
   // most inputs (the thesis's constants are small), so this is on by default.
   bool keep_better_cdt = true;
+  // Q \ R (§5.4) connected by the thesis's per-piece fans (Figs. 5.17,
+  // 5.19-5.21) instead of the CDT of the same vertices. The CDT's min angle
+  // is never smaller (Lawson: same vertices, same constraints); measured
+  // about half on the test inputs (docs/ALGORITHM.md §11.10). For
+  // comparison with the thesis's construction.
+  bool thesis_fans = false;
 };
 
 // Cdt: fallback (a stage could not be built); CdtBetter: the pipeline ran,

@@ -6,8 +6,9 @@
 // or of the neighbouring figure across the match edge it was put on, and
 // strictly off dQ and dR), no two points share coordinates, and the
 // triangles are the constrained Delaunay triangulation of Q \ R with dQ's
-// sides (unsplit) and dR's mesh edges as constraints, so they conform to
-// Q^c along dQ and to R's mesh along dR.
+// sides (unsplit) and dR's mesh edges as constraints (or, with
+// Connectivity::Fans, the thesis's fans of match_fans.hpp on the same
+// vertices), so they conform to Q^c along dQ and to R's mesh along dR.
 #include "nosteiner2d/match_qr.hpp"
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <utility>
 
 #include "cdt2d/constrained_delaunay.hpp"
+#include "nosteiner2d/match_fans.hpp"
 #include "nosteiner2d/match_figures.hpp"
 #include "nosteiner2d/match_squares.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
@@ -79,19 +81,37 @@ MatchQR match_q_to_r(const PolygonQ& q, const PolygonR& r, const TriMesh2& r_mes
   const std::size_t fixed = in.points.size();
 
   st.min_delta_over_length = std::numeric_limits<double>::infinity();
-  st.min_match_angle = std::numeric_limits<double>::infinity();
+  st.min_match_angle = st.min_match_angle_triangle = std::numeric_limits<double>::infinity();
   st.min_elongation = std::numeric_limits<double>::infinity();
-  for (const auto& f : figs) {
+  // Per figure, for the fans: the drawing and the kept vertices in its frame.
+  std::vector<SquareDrawing> drawings(figs.size());
+  std::vector<std::vector<FrameVertex>> frame(figs.size());
+  for (std::size_t fi = 0; fi < figs.size(); ++fi) {
+    const MatchFigure& f = figs[fi];
     (f.is_triangle ? st.triangles_fig : st.trapezoids) += 1;
     if (!f.is_triangle) st.min_delta_over_length = std::min(st.min_delta_over_length, f.scale);
+    double& lo = f.is_triangle ? st.min_match_angle_triangle : st.min_match_angle;
+    double& hi = f.is_triangle ? st.max_match_angle_triangle : st.max_match_angle;
     for (const double ang : {interior_angle(f.a, f.b, f.p), interior_angle(f.b, f.a, f.q)}) {
-      st.min_match_angle = std::min(st.min_match_angle, ang);
-      st.max_match_angle = std::max(st.max_match_angle, ang);
+      lo = std::min(lo, ang);
+      hi = std::max(hi, ang);
     }
     for (int id : {f.p_id, f.q_id}) scale[std::size_t(local[id])] = std::min(scale[std::size_t(local[id])], f.scale);
     for (int id : f.f_ids) scale[std::size_t(local[id])] = std::min(scale[std::size_t(local[id])], f.scale);
 
-    const SquareDrawing d = draw_squares(f);
+    drawings[fi] = draw_squares(f);
+    const SquareDrawing& d = drawings[fi];
+    for (std::size_t i = 0; i < f.f_ids.size() && i < d.f_u.size(); ++i)
+      frame[fi].push_back({d.f_u[i], 0.0, local[f.f_ids[i]]});
+    frame[fi].push_back({0.0, 1.0, local[f.p_id]});
+    frame[fi].push_back({1.0, 1.0, local[f.q_id]});
+    // A kept square vertex belongs to this figure's frame, and one on a match
+    // edge also to the neighbour's across it (at its u = 1 / u = 0, the same t).
+    auto keep = [&](const SquarePoint& sp, int k) {
+      frame[fi].push_back({sp.u, sp.t, k});
+      if (sp.on == SquarePoint::On::StartEdge) frame[std::size_t(f.prev)].push_back({1.0, sp.t, k});
+      if (sp.on == SquarePoint::On::EndEdge) frame[std::size_t(f.next)].push_back({0.0, sp.t, k});
+    };
     st.squares += d.squares;
     st.max_steps = std::max(st.max_steps, d.steps);
     st.level_raises += d.level_raises;
@@ -115,8 +135,10 @@ MatchQR match_q_to_r(const PolygonQ& q, const PolygonR& r, const TriMesh2& r_mes
       if (!added) {
         ++st.shared;
         scale[std::size_t(it->second)] = std::min(scale[std::size_t(it->second)], f.scale);
+        keep(sp, it->second);
         continue;
       }
+      keep(sp, int(in.points.size()));
       in.points.push_back(sp.point);
       combined.push_back(nq + nr + int(out.points.size()));
       scale.push_back(f.scale);
@@ -124,11 +146,26 @@ MatchQR match_q_to_r(const PolygonQ& q, const PolygonR& r, const TriMesh2& r_mes
     }
   }
   if (st.squares == 0) st.min_elongation = 0;
-  if (figs.empty()) st.min_match_angle = st.min_delta_over_length = 0;
+  if (st.trapezoids == 0) st.min_match_angle = st.min_delta_over_length = 0;
+  if (st.triangles_fig == 0) st.min_match_angle_triangle = 0;
 
   // The construction's triangles, then (a measurement, and the alternative
   // of MatchOptions::keep_better) the same region without the square vertices.
-  const cdt2d::CdtOutput tri = cdt2d::constrained_delaunay(in, /*keep_inside=*/true);
+  cdt2d::CdtOutput tri;
+  bool fanned = options.connectivity == MatchOptions::Connectivity::Fans;
+  if (fanned) {
+    FanStats fs;
+    for (std::size_t fi = 0; fi < figs.size(); ++fi)
+      if (!triangulate_figure_by_fans(figs[fi], drawings[fi], frame[fi], in.points, tri.triangles, fs))
+        ++st.figures_not_fanned;
+    st.fans = fs.fans;
+    st.polygon_cdts = fs.polygon_cdts;
+    st.fans_min_angle = fs.fans_min_angle;
+    st.polygon_cdts_min_angle = fs.polygon_cdts_min_angle;
+    if (st.figures_not_fanned > 0) tri.triangles.clear();
+    fanned = st.figures_not_fanned == 0;
+  }
+  if (!fanned) tri = cdt2d::constrained_delaunay(in, /*keep_inside=*/true);
   st.squares_min_angle = std::numeric_limits<double>::infinity();
   st.min_angle_over_scale = std::numeric_limits<double>::infinity();
   out.triangles.reserve(tri.triangles.size());

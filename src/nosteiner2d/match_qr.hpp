@@ -19,12 +19,13 @@
 //     the apex as both Q ends. n is chosen from the edges on F
 //     (match_squares.hpp).
 //  3. match_qr.cpp: the triangles. The vertex set is dQ, R's mesh vertices on
-//     dR and the square vertices; the connectivity is the constrained
-//     Delaunay triangulation of Q \ R on that vertex set, with every side of
-//     dQ and every mesh edge of dR as a constraint (deviation from the
-//     per-square fans of Figs. 5.19-5.21; by Lawson's optimality it has a
-//     min angle at least that of any triangulation of the same vertices
-//     with the same constraints, the thesis's among them). Match edges are
+//     dR and the square vertices; the connectivity (MatchOptions) is by
+//     default the constrained Delaunay triangulation of Q \ R on that vertex
+//     set, with every side of dQ and every mesh edge of dR as a constraint
+//     (by Lawson's optimality its min angle is at least that of any
+//     triangulation of the same vertices with the same constraints, the
+//     thesis's among them), or the thesis's per-piece fans of Figs. 5.17,
+//     5.19-5.21 (match_fans.hpp; measured 0.33-1 times the CDT's). Match edges are
 //     not constraints: the figures on the two sides of a match edge put
 //     their corners on it at heights 2^-j, and equal heights give the same
 //     rounded point, which is one vertex ("adjacent figures share sides").
@@ -64,12 +65,26 @@ struct MatchStats {
   // scale of a triangle is the smallest MatchFigure::scale (delta(E)/L(E))
   // over the figures its vertices belong to.
   double min_angle_over_scale = 0;
-  // Lemmas 43-44: the interior angles of the figures at R's vertices, i.e.
-  // between a match edge and F (radians): min (>= pi/4 + kA) and max (<= pi - kA).
+  // Lemmas 43-44: the interior angles of the match trapezoids at R's
+  // vertices, i.e. between a match edge and F (radians): min (>= pi/4 + kA)
+  // and max (<= pi - kA). The proofs are about trapezoids (Case 1 / Case 2
+  // corners of §5.2 seen from the side E); the construction gives them
+  // directly: the trapezoid's angles at a and p sum to pi (E parallel to F),
+  // and the angle at p is < 3 pi/4 (Case 1: a part of the corner angle
+  // <= 3 pi/4) or the ray angle beta <= 3 pi/4 (Case 2), so min > pi/4.
   double min_match_angle = 0, max_match_angle = 0;
+  // The same angles in the match triangles (§5.4.2): they sum to pi/2 at the
+  // two R vertices and the thesis bounds them only by a constant times
+  // min(delta(H)/L(H)) of the neighbouring sides, not by pi/4.
+  double min_match_angle_triangle = 0, max_match_angle_triangle = 0;
   double cdt_min_angle = 0;      // the CDT of Q \ R without the square vertices (no square vertices)
   double squares_min_angle = 0;  // the CDT with the square vertices (§5.4's construction)
   bool used_plain_cdt = false;   // the output is the plain CDT (MatchOptions::keep_better)
+  // Connectivity::Fans: pieces triangulated by the thesis's fan, pieces whose
+  // fan was not valid (their own CDT), and figures left to the CDT of Q \ R
+  // (the drawing gave no pieces: never expected).
+  std::int64_t fans = 0, polygon_cdts = 0, figures_not_fanned = 0;
+  double fans_min_angle = 0, polygon_cdts_min_angle = 0;  // radians, over those pieces (10: none)
 };
 
 struct MatchOptions {
@@ -78,6 +93,13 @@ struct MatchOptions {
   // to the thesis: it only raises the min angle, so the bound of Lemmas
   // 45-47 still holds for the output).
   bool keep_better = true;
+  // Connectivity of §5.4's construction: the thesis's per-piece fans
+  // (Figs. 5.17, 5.19-5.21, match_fans.hpp), or the constrained Delaunay
+  // triangulation of Q \ R on the same vertices. By Lawson's optimality the
+  // CDT's min angle is at least the fans' (same vertices, same constraints
+  // dQ and dR), so the fans are the thesis's construction and the CDT the
+  // better output; both are measured (match_qr_test.cpp).
+  enum class Connectivity { Fans, Cdt } connectivity = Connectivity::Cdt;
 };
 
 // Always empty: dQ is never split (kept for the caller's assembly).

@@ -24,6 +24,7 @@ struct Item {
   bool at_start = false, at_end = false;  // contains F's first / last vertex
   bool mesh_edge = true;                  // a triangulation edge of R on F (not a square)
   double elongation = 1;
+  double height = 0;  // t of its top: 0 for a mesh edge
 };
 
 // floor(log2(x)) for x >= 1, from the binary exponent (exact on the rounded x).
@@ -49,6 +50,7 @@ SquareDrawing draw_squares(const MatchFigure& f) {
   for (std::size_t i = 0; i < f.f.size(); ++i) u[i] = std::clamp(dot(f.f[i] - f.a, ab) / ab2, 0.0, 1.0);
   u.front() = 0;
   u.back() = 1;
+  out.f_u = u;
   const double h0 = *std::min_element(len.begin(), len.end());
   if (!(h0 > 0)) return out;
 
@@ -117,8 +119,11 @@ SquareDrawing draw_squares(const MatchFigure& f) {
         sq.at_end = s[g + size - 1].at_end;
         sq.mesh_edge = false;
         sq.elongation = 0;
+        sq.height = t_top;
+        DrawnSquare drawn{sq.u0, sq.u1, t_top, {}, false, 0, 0};
         bool all_mesh_edges = true;
         for (std::size_t h = g; h < g + size; ++h) {
+          drawn.items.push_back({s[h].u0, s[h].u1, s[h].height});
           sq.elongation += s[h].elongation * std::ldexp(1.0, s[h].level - sq.level);
           all_mesh_edges = all_mesh_edges && s[h].mesh_edge;
           if (i > s[h].level + 1) ++out.lemma41_violations;
@@ -133,7 +138,13 @@ SquareDrawing draw_squares(const MatchFigure& f) {
         emit(sq.u1, t_top);
         // Centre vertex of a square around three triangulation edges (Fig. 5.20):
         // the midpoint of the segment halfway between its bottom and top.
-        if (size == 3 && all_mesh_edges) emit((sq.u0 + sq.u1) / 2, t_top / 2);
+        if (size == 3 && all_mesh_edges) {
+          emit((sq.u0 + sq.u1) / 2, t_top / 2);
+          drawn.has_centre = true;
+          drawn.centre_u = (sq.u0 + sq.u1) / 2;
+          drawn.centre_t = t_top / 2;
+        }
+        out.drawn.push_back(std::move(drawn));
         next.push_back(sq);
         g += size;
       }
@@ -142,6 +153,7 @@ SquareDrawing draw_squares(const MatchFigure& f) {
     }
     s = std::move(next);
   }
+  for (const Item& it : s) out.final_items.push_back({it.u0, it.u1, it.height});
   if (s.size() > 1)
     for (const Item& it : s)
       if (it.level + 1 <= n) ++out.lemma41_violations;

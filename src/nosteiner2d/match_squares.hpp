@@ -54,9 +54,28 @@ struct SquarePoint {
   enum class On { Inside, StartEdge, EndEdge } on = On::Inside;  // on the match edge at a (u = 0) / at b (u = 1)
 };
 
+// An item of S in the frame: [u0, u1] at height t = height (0 for a mesh
+// edge of F, the top t of a square).
+struct FrameItem {
+  double u0 = 0, u1 = 1, height = 0;
+};
+
+// A drawn square: [u0, u1] x [below its items, t_top]; its bottom is the
+// staircase of the items it was drawn around (left to right). centre: the
+// centre vertex of a square around three mesh edges (Fig. 5.20), else unset.
+struct DrawnSquare {
+  double u0 = 0, u1 = 1, t_top = 0;
+  std::vector<FrameItem> items;
+  bool has_centre = false;
+  double centre_u = 0, centre_t = 0;
+};
+
 struct SquareDrawing {
-  std::vector<SquarePoint> points;  // corners (top corners of every square) and centre vertices
-  int steps = 0;                    // n
+  std::vector<SquarePoint> points;     // corners (top corners of every square) and centre vertices
+  std::vector<double> f_u;             // u of F's mesh vertices (a = 0 .. b = 1), as the items use them
+  std::vector<DrawnSquare> drawn;      // every square, in the order drawn (smaller steps first)
+  std::vector<FrameItem> final_items;  // S after step n: the bottom of the region below E (§5.4.1)
+  int steps = 0;                       // n
   std::int64_t squares = 0;
   std::int64_t level_raises = 0;        // end-edge rule and balance
   std::int64_t lemma41_violations = 0;  // an item of level l drawn around after step l + 1, or never

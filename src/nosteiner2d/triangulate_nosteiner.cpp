@@ -143,7 +143,12 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
         mesh.vertices.insert(mesh.vertices.end(), r_mesh->mesh.vertices.begin(), r_mesh->mesh.vertices.end());
         add(mesh, r_mesh->mesh.triangles, kRegionR, offset);
         // §5.4: match trapezoids and triangles with square drawing (match_qr.hpp).
-        const auto between = detail::match_q_to_r(*q, r, r_mesh->mesh);
+        detail::MatchOptions match;
+        if (options.thesis_fans) {  // the thesis's construction as it is (no swap for the plain CDT)
+          match.connectivity = detail::MatchOptions::Connectivity::Fans;
+          match.keep_better = false;
+        }
+        const auto between = detail::match_q_to_r(*q, r, r_mesh->mesh, match);
         mesh.vertices.insert(mesh.vertices.end(), between.points.begin(), between.points.end());
         add(mesh, between.triangles, kRegionBetween);
         // Vertices on dR: R's mesh vertices on a Q-to-R triangle.

@@ -178,6 +178,14 @@ struct Stats {
   double min_match = std::numeric_limits<double>::infinity(), max_match = 0;  // Lemmas 43-44 (radians)
   double min_match43_over_g = std::numeric_limits<double>::infinity();        // (angle - pi/4) / g
   double min_match44_over_g = std::numeric_limits<double>::infinity();        // (pi - angle) / g
+  double min_match_tri = std::numeric_limits<double>::infinity();             // §5.4.2 (radians)
+  // The thesis's fans (MatchOptions::Connectivity::Fans) on the same vertices.
+  std::int64_t fans = 0, polygon_cdts = 0, not_fanned = 0;
+  double fans_min_over_g = std::numeric_limits<double>::infinity();
+  double fans_min_over_scale = std::numeric_limits<double>::infinity();
+  double fans_min_over_cdt_conn = std::numeric_limits<double>::infinity();  // fans / CDT connectivity
+  double fanned_pieces_min_over_g = std::numeric_limits<double>::infinity();  // in the pieces fanned
+  double cdt_pieces_min_over_g = std::numeric_limits<double>::infinity();     // in the pieces given their CDT
 };
 
 // Measured floors (the prints, rounded down): the construction's min angle
@@ -188,6 +196,17 @@ struct Stats {
 // in Lemmas 45-47 is about 0.06 here.
 constexpr double kMinOverGFloor = 0.005;
 constexpr double kMinOverScaleFloor = 0.05;
+// The same for the thesis's fans on the same vertices (Connectivity::Fans):
+// measured 0.0134 g (data/2d), 0.0080 g (random seeds 1-24), 0.0032 g (hard
+// cases); over delta(E)/L(E) 0.0276, 0.042, 0.055: Lemmas 45-47 hold for the
+// thesis's triangulation of the squares with a constant of about 0.03.
+constexpr double kFansMinOverGFloor = 0.0025;
+constexpr double kFansMinOverScaleFloor = 0.02;
+// Lemmas 43-44 with kA written as k g(P): min (angle - pi/4)/g measured 0.59
+// (data/2d), 0.33 (random seeds 1-24), 0.17 (hard cases); min (pi - angle)/g
+// 0.32, 0.31, 0.16. Floors rounded down.
+constexpr double kLemma43Floor = 0.1;
+constexpr double kLemma44Floor = 0.1;
 
 // Q \ R (the matching) + R is a valid mesh of Q with dQ unsplit, and
 // Q^c + Q \ R + R a valid mesh of P with no Steiner point on dP; the
@@ -263,6 +282,28 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
     ++st.plain_chosen;
     check_assembly(d, q, ql, rm.mesh, best, "keep_better");
   }
+  // The thesis's per-piece fans on the same vertex set: a valid mesh too, and
+  // by Lawson's optimality never above the CDT's min angle (same vertices and
+  // constraints); equal point sets are checked, so the comparison is fair.
+  detail::MatchQR fans;
+  ASSERT_NO_THROW(fans = detail::match_q_to_r(
+                      q, r, rm.mesh, {.keep_better = false, .connectivity = detail::MatchOptions::Connectivity::Fans}));
+  check_assembly(d, q, ql, rm.mesh, fans, "fans");
+  EXPECT_EQ(fans.points.size(), m.points.size());
+  EXPECT_EQ(fans.triangles.size(), m.triangles.size());  // same vertices, same boundary: Euler
+  EXPECT_EQ(fans.stats.figures_not_fanned, 0);
+  EXPECT_LE(fans.stats.squares_min_angle, m.stats.squares_min_angle);
+  EXPECT_GE(fans.stats.squares_min_angle, kFansMinOverGFloor * g);
+  EXPECT_GE(fans.stats.min_angle_over_scale, kFansMinOverScaleFloor);
+  st.fans += fans.stats.fans;
+  st.polygon_cdts += fans.stats.polygon_cdts;
+  st.not_fanned += fans.stats.figures_not_fanned;
+  st.fanned_pieces_min_over_g = std::min(st.fanned_pieces_min_over_g, fans.stats.fans_min_angle / g);
+  st.cdt_pieces_min_over_g = std::min(st.cdt_pieces_min_over_g, fans.stats.polygon_cdts_min_angle / g);
+  st.fans_min_over_g = std::min(st.fans_min_over_g, fans.stats.squares_min_angle / g);
+  st.fans_min_over_scale = std::min(st.fans_min_over_scale, fans.stats.min_angle_over_scale);
+  st.fans_min_over_cdt_conn =
+      std::min(st.fans_min_over_cdt_conn, fans.stats.squares_min_angle / m.stats.squares_min_angle);
   const detail::MatchStats& ms = m.stats;
   const double r_min = min_triangle_angle(rm.mesh);
   EXPECT_EQ(ms.lemma41_violations, 0);
@@ -295,6 +336,16 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
   st.max_match = std::max(st.max_match, ms.max_match_angle);
   st.min_match43_over_g = std::min(st.min_match43_over_g, (ms.min_match_angle - kPi / 4) / g);
   st.min_match44_over_g = std::min(st.min_match44_over_g, (kPi - ms.max_match_angle) / g);
+  if (ms.triangles_fig > 0) st.min_match_tri = std::min(st.min_match_tri, ms.min_match_angle_triangle);
+  // Lemma 43 on the match trapezoids, derived (match_qr.hpp): the angle at p
+  // is a part of a Case 1 corner (<= 3 pi/4) or a Case 2 ray angle (<= 3 pi/4
+  // as well), and the angles at p and a sum to pi, so the angle at a > pi/4.
+  if (ms.trapezoids > 0) {
+    EXPECT_GT(ms.min_match_angle, kPi / 4) << what;
+    EXPECT_LT(ms.max_match_angle, kPi) << what;  // Lemma 44's trivial half: the match edge is not along F
+    EXPECT_GE((ms.min_match_angle - kPi / 4) / g, kLemma43Floor) << what;  // Lemma 43, measured k
+    EXPECT_GE((kPi - ms.max_match_angle) / g, kLemma44Floor) << what;      // Lemma 44, measured k
+  }
   std::cout << "[match] " << what << ": " << m.triangles.size() << " triangles, " << m.points.size()
             << " points, min angle " << ms.squares_min_angle * 180 / kPi << " deg = " << ms.squares_min_angle / g
             << " g, plain CDT " << ms.cdt_min_angle * 180 / kPi << " deg; Q^c " << q.min_angle / g << " g, R mesh "
@@ -314,7 +365,13 @@ void print(const Stats& st, const char* what) {
             << "; keep_better chose the plain CDT in " << st.plain_chosen << ", then min angle / g "
             << st.best_min_over_g << "\n  match edge vs F: angles in [" << st.min_match * 180 / kPi << ", "
             << st.max_match * 180 / kPi << "] deg; min (angle - pi/4)/g (Lemma 43) " << st.min_match43_over_g
-            << ", min (pi - angle)/g (Lemma 44) " << st.min_match44_over_g << "\n";
+            << ", min (pi - angle)/g (Lemma 44) " << st.min_match44_over_g
+            << "; match triangles (5.4.2, no pi/4 bound): min " << st.min_match_tri * 180 / kPi << " deg\n"
+            << "  thesis fans (Figs. 5.17, 5.19-5.21): " << st.fans << " pieces fanned, " << st.polygon_cdts
+            << " by their own CDT, " << st.not_fanned << " figures not fanned; min angle / g " << st.fans_min_over_g
+            << ", / (delta(E)/L(E)) " << st.fans_min_over_scale << ", fans / CDT connectivity min "
+            << st.fans_min_over_cdt_conn << " (min / g in fanned pieces " << st.fanned_pieces_min_over_g
+            << ", in pieces given their own CDT " << st.cdt_pieces_min_over_g << ")\n";
 }
 
 TEST(MatchQR, Corpus) {
