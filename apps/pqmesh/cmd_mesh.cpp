@@ -144,7 +144,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 }  // namespace
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
-                                                 "--fixed-boundary", "--pipeline", "--aligned-grid"};
+                                                 "--fixed-boundary", "--pipeline", "--thesis-fans",
+                                                 "--aligned-grid"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
 

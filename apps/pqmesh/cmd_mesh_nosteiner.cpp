@@ -25,7 +25,7 @@
 namespace pqmesh::cli {
 
 int run_mesh_no_steiner(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline"},
+  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline", "--thesis-fans"},
                   {"-o", "--output", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   const std::string input = args.positional()[0];
@@ -41,6 +41,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
     options.r_mesh.refine_angle_degrees = a;
   }
   options.keep_better_cdt = !args.flag("--pipeline");
+  options.thesis_fans = args.flag("--thesis-fans");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   const MeshFormat format = forced ? *forced : mesh_format_from_path(output);
   const bool quiet = args.flag("--quiet");
@@ -67,7 +68,8 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   std::cout << "input      " << input << " (2D polygon with holes)\n"
             << "domain     " << domain.pslg.vertices.size() << " vertices, " << segments << " segments, "
             << domain.loops.size() - 1 << " holes, area " << fmt(domain.area) << '\n'
-            << "mode       no boundary Steiner points (thesis ch. 5): every point added lies strictly inside\n"
+            << "mode       no boundary Steiner points (thesis ch. 5): every point added lies strictly inside"
+            << (options.thesis_fans ? "; Q to R connected by the thesis's fans" : "") << '\n'
             << "bound g    g(P) = " << fmt4_degrees(s.g) << " deg; any Steiner-free-boundary triangulation has min angle <= "
             << "min(60, " << fmt4(s.constant) << " * g) = " << fmt4_degrees(s.upper_bound) << " deg\n"
             << "angles     min " << fmt4_degrees(s.min_angle) << " deg; achieved / g = " << fmt4(s.ratio) << '\n'

@@ -22,7 +22,7 @@ const std::vector<Command>& commands() {
        run_info},
       {"mesh", "mesh a 2D or 3D domain; check and write the mesh",
        "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--refine-angle DEG]\n"
-       "                   [--protect-edges] [--aligned-grid] [--no-boundary-steiner [--pipeline]]\n"
+       "                   [--protect-edges] [--aligned-grid] [--no-boundary-steiner [--pipeline] [--thesis-fans]]\n"
        "                   [--format F] [--quiet]\n"
        "\n"
        "2D: meshes a polygon with holes (Triangle .poly) with the quadtree mesher, the 2D analog of\n"
@@ -65,7 +65,9 @@ const std::vector<Command>& commands() {
        "                       angle and achieved/g, the pipeline's path (full, or the q-only / cdt\n"
        "                       fallback with its reason), the CDT's min angle. When the CDT of the input\n"
        "                       has the larger min angle it is written instead (path cdt-better;\n"
-       "                       --pipeline keeps the pipeline's mesh). With it: -o, --format,\n"
+       "                       --pipeline keeps the pipeline's mesh; --thesis-fans connects the\n"
+       "                       matching's points by the thesis's per-square fans, Figs. 5.19-5.21,\n"
+       "                       instead of their CDT, and keeps that mesh). With it: -o, --format,\n"
        "                       --refine-angle (the mesh of R), --quiet.\n"
        "  --quiet              print nothing on success\n"
        "\n"

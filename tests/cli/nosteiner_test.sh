@@ -27,6 +27,18 @@ printf '5 2 0 0\n1 0 0\n2 1 0\n3 2 0\n4 2 1\n5 0 1\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 
 expect 0 "straight angle" -- "$pqmesh" mesh "$work/straight.poly" -o "$work/straight.vtu" --no-boundary-steiner
 expect 0 "straight angle check" -- "$pqmesh" check "$work/straight.vtu" --domain "$work/straight.poly" --no-boundary-steiner
 
+# --pipeline keeps the pipeline's mesh (path full, never cdt-better); --thesis-fans connects Q to R by
+# the thesis's fans and keeps that mesh. Both outputs pass the checker.
+expect 0 "square --pipeline" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/pl.vtu" --no-boundary-steiner --pipeline
+contains "$work/out" "^path +full" "--pipeline writes the pipeline's mesh"
+expect 0 "square --pipeline check" -- "$pqmesh" check "$work/pl.vtu" --domain "$data/2d/square.poly" --no-boundary-steiner
+expect 0 "comb --thesis-fans" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/fans.vtu" --no-boundary-steiner --thesis-fans
+contains "$work/out" "^mode .*connected by the thesis's fans" "--thesis-fans named in the mode line"
+contains "$work/out" "^path +full" "--thesis-fans keeps the fans' mesh"
+expect 0 "comb --thesis-fans check" -- "$pqmesh" check "$work/fans.vtu" --domain "$data/2d/comb.poly" --no-boundary-steiner
+expect 64 "--thesis-fans without --no-boundary-steiner" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/never_fans.vtu" --thesis-fans
+[[ -e $work/never_fans.vtu ]] && fail "output written after a usage error" || ok
+
 # Failures write nothing: a missing -o, a bad option value, an invalid input.
 expect 64 "missing -o" -- "$pqmesh" mesh "$data/2d/square.poly" --no-boundary-steiner
 expect 64 "bad --refine-angle" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/bad.vtu" --no-boundary-steiner --refine-angle 45
