@@ -95,18 +95,31 @@ class Certified {
 // [2^-800, 1) and every partial product of the split is a multiple of at
 // least 2^-906, far from the subnormal range, and nothing can overflow.
 // scale_axis returns false when that does not hold (or a value is not finite).
-bool scale_axis(double (&v)[3]) {
-  const double m = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  if (!std::isfinite(m)) return false;
-  if (m == 0) return true;
+// scale_group does the same for any group of values that share one factor
+// (floor 2^-floor_exp instead of 2^-400).
+template <std::size_t N>
+bool scale_group(double (&v)[N], int floor_exp) {
+  double m = 0;
+  for (const double x : v) m = std::max(m, std::abs(x));
+  if (!std::isfinite(m)) return false;  // infinity (max skips a NaN; the loops below refuse it)
+  if (m == 0) {
+    for (const double x : v)
+      if (x != 0) return false;  // NaN
+    return true;
+  }
   int e = 0;
   std::frexp(m, &e);  // m = f 2^e, f in [1/2, 1)
+  const double floor = std::ldexp(1.0, -floor_exp);
   for (double& x : v) {
-    x = std::ldexp(x, -e);  // exact whenever the result is at least 2^-1022
-    if (x != 0 && std::abs(x) < 0x1p-400) return false;
+    if (x == 0) continue;
+    // Exact whenever the result is at least 2^-1022. A value that would fall
+    // below the floor (or to zero: a subnormal next to 1) is refused, as is NaN.
+    x = std::ldexp(x, -e);
+    if (!(std::abs(x) >= floor)) return false;
   }
   return true;
 }
+bool scale_axis(double (&v)[3]) { return scale_group(v, 400); }
 
 // p + err == a * b exactly (no overflow or underflow).
 void two_product(double a, double b, double& p, double& err) {
@@ -115,6 +128,30 @@ void two_product(double a, double b, double& p, double& err) {
   split_veltkamp(a, ah, al);
   split_veltkamp(b, bh, bl);
   err = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
+// d = x - y, true when that is exact (Knuth's two-difference leaves no error;
+// NaN and infinities fail).
+bool exact_difference(double x, double y, double& d) {
+  d = x - y;
+  const double y_virtual = x - d, x_virtual = d + y_virtual;
+  return (x - x_virtual) + (y_virtual - y) == 0;
+}
+
+// Three products a b c, each exact as four doubles p1 + e1 + p2 + e2 (a b =
+// p + e, p c = p1 + e1, e c = p2 + e2), added to `sum`. Exact when every
+// nonzero factor lies in [2^-250, 1): every partial value is then a multiple
+// of at least 2^-909 and below 1 (orient3d_expansion).
+template <class Sum>
+void add_triple_product(Sum& sum, double a, double b, double c) {
+  double p = 0, e = 0, p1 = 0, e1 = 0, p2 = 0, e2 = 0;
+  two_product(a, b, p, e);
+  two_product(p, c, p1, e1);
+  two_product(e, c, p2, e2);
+  sum.add(e2);
+  sum.add(p2);
+  sum.add(e1);
+  sum.add(p1);
 }
 
 // A sum of doubles held exactly: components nonoverlapping, by increasing
@@ -141,6 +178,28 @@ class Expansion {
   double c_[N] = {};
   int n_ = 0;
 };
+
+// The exact sign of sum_k x_k y_k: the x group and the y group are each
+// scaled by one power of two (the sum is multiplied by a positive factor),
+// then every product is split exactly into its double and its rounding error
+// and the 2N doubles are summed as an expansion. With every nonzero scaled
+// factor in [2^-400, 1) the products lie in [2^-800, 1) and every partial
+// product of the split is a multiple of at least 2^-906: no underflow, no
+// overflow (the argument of orient2d_expansion). False when that range or
+// finiteness does not hold.
+template <std::size_t N>
+bool sum_of_products_sign(double (&x)[N], double (&y)[N], Sign& sign) {
+  if (!scale_group(x, 400) || !scale_group(y, 400)) return false;
+  Expansion<2 * N> sum;
+  for (std::size_t k = 0; k < N; ++k) {
+    double p = 0, err = 0;
+    two_product(x[k], y[k], p, err);
+    sum.add(err);
+    sum.add(p);
+  }
+  sign = sum.sign();
+  return true;
+}
 
 mpq_class q(double v) { return mpq_class(v); }  // exact: every finite double is a dyadic rational
 
@@ -196,6 +255,7 @@ Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
                            std::abs(by) * (std::abs(cx * dz) + std::abs(cz * dx)) +
                            std::abs(bz) * (std::abs(cx * dy) + std::abs(cy * dx));
   if (const auto s = filter(det, permanent, 16)) return *s;
+  if (Sign s = Sign::Zero; detail::orient3d_expansion(a, b, c, d, s)) return s;
   const mpq_class m[3][3] = {{q(b.x) - q(a.x), q(b.y) - q(a.y), q(b.z) - q(a.z)},
                              {q(c.x) - q(a.x), q(c.y) - q(a.y), q(c.z) - q(a.z)},
                              {q(d.x) - q(a.x), q(d.y) - q(a.y), q(d.z) - q(a.z)}};
@@ -214,14 +274,6 @@ Sign orient2d_projected(Vec3 a, Vec3 b, Vec3 c, int drop) {
 }
 
 namespace {
-
-// d = x - y, true when that is exact (Knuth's two-difference leaves no error;
-// NaN and infinities fail).
-bool exact_difference(double x, double y, double& d) {
-  d = x - y;
-  const double y_virtual = x - d, x_virtual = d + y_virtual;
-  return (x - x_virtual) + (y_virtual - y) == 0;
-}
 
 // Widens [low, top] to cover the set bits of v: v is a multiple of 2^low and
 // below 2^(top + 1) in magnitude. False for subnormals, infinities, NaN.
@@ -329,18 +381,61 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   return -sign_of_mpq(exact);
 }
 
+bool detail::orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign) {
+  // Columns of det(u, v, w), u = b - a, v = c - a, w = d - a; every term of
+  // the determinant takes one entry from each column, so scaling a column
+  // by a power of two scales the determinant by it (sign unchanged).
+  double x[3], y[3], z[3];
+  if (!exact_difference(b.x, a.x, x[0]) || !exact_difference(c.x, a.x, x[1]) || !exact_difference(d.x, a.x, x[2]) ||
+      !exact_difference(b.y, a.y, y[0]) || !exact_difference(c.y, a.y, y[1]) || !exact_difference(d.y, a.y, y[2]) ||
+      !exact_difference(b.z, a.z, z[0]) || !exact_difference(c.z, a.z, z[1]) || !exact_difference(d.z, a.z, z[2]))
+    return false;
+  if (!scale_group(x, 250) || !scale_group(y, 250) || !scale_group(z, 250)) return false;
+  // det = ux (vy wz - vz wy) - uy (vx wz - vz wx) + uz (vx wy - vy wx).
+  Expansion<24> sum;
+  add_triple_product(sum, x[0], y[1], z[2]);
+  add_triple_product(sum, -x[0], z[1], y[2]);
+  add_triple_product(sum, -y[0], x[1], z[2]);
+  add_triple_product(sum, y[0], z[1], x[2]);
+  add_triple_product(sum, z[0], x[1], y[2]);
+  add_triple_product(sum, -z[0], y[1], x[2]);
+  sign = sum.sign();
+  return true;
+}
+
+bool detail::dot_sign_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign) {
+  {
+    double u[2], v[2];
+    if (exact_difference(b.x, a.x, u[0]) && exact_difference(b.y, a.y, u[1]) && exact_difference(c.x, a.x, v[0]) &&
+        exact_difference(c.y, a.y, v[1]))
+      return sum_of_products_sign(u, v, sign);
+  }
+  // (b - a) . (c - a) = sum_i b_i c_i - b_i a_i - a_i c_i + a_i a_i.
+  double x[8] = {b.x, -b.x, -a.x, a.x, b.y, -b.y, -a.y, a.y};
+  double y[8] = {c.x, a.x, c.x, a.x, c.y, a.y, c.y, a.y};
+  return sum_of_products_sign(x, y, sign);
+}
+
+bool detail::dot_sign_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign) {
+  {
+    double u[3], v[3];
+    if (exact_difference(b.x, a.x, u[0]) && exact_difference(b.y, a.y, u[1]) && exact_difference(b.z, a.z, u[2]) &&
+        exact_difference(d.x, c.x, v[0]) && exact_difference(d.y, c.y, v[1]) && exact_difference(d.z, c.z, v[2]))
+      return sum_of_products_sign(u, v, sign);
+  }
+  // (b - a) . (d - c) = sum_i b_i d_i - b_i c_i - a_i d_i + a_i c_i.
+  double x[12] = {b.x, -b.x, -a.x, a.x, b.y, -b.y, -a.y, a.y, b.z, -b.z, -a.z, a.z};
+  double y[12] = {d.x, c.x, d.x, c.x, d.y, c.y, d.y, c.y, d.z, c.z, d.z, c.z};
+  return sum_of_products_sign(x, y, sign);
+}
+
 Sign detail::dot_sign_after_filter(Vec2 a, Vec2 b, Vec2 c) {
+  if (Sign s = Sign::Zero; dot_sign_expansion(a, b, c, s)) return s;
   return sign_of_mpq((q(b.x) - q(a.x)) * (q(c.x) - q(a.x)) + (q(b.y) - q(a.y)) * (q(c.y) - q(a.y)));
 }
 
-Sign dot_sign(Vec3 a, Vec3 b, Vec3 c) { return dot_sign(a, b, a, c); }
-
-Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-  const double vx = d.x - c.x, vy = d.y - c.y, vz = d.z - c.z;
-  const double det = ux * vx + uy * vy + uz * vz;
-  const double permanent = std::abs(ux * vx) + std::abs(uy * vy) + std::abs(uz * vz);
-  if (const auto s = filter(det, permanent, 8)) return *s;
+Sign detail::dot_sign_after_filter(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  if (Sign s = Sign::Zero; dot_sign_expansion(a, b, c, d, s)) return s;
   return sign_of_mpq((q(b.x) - q(a.x)) * (q(d.x) - q(c.x)) + (q(b.y) - q(a.y)) * (q(d.y) - q(c.y)) +
                      (q(b.z) - q(a.z)) * (q(d.z) - q(c.z)));
 }

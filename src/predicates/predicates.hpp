@@ -41,6 +41,7 @@ constexpr double kTinyPermanent = 1e-280;
 Sign orient2d_after_filter(Vec2 a, Vec2 b, Vec2 c);
 Sign incircle_after_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 Sign dot_sign_after_filter(Vec2 a, Vec2 b, Vec2 c);
+Sign dot_sign_after_filter(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 // The expansion stage of orient2d on its own (for tests): the exact sign of
 // det(a - c, b - c) from twelve error-free products summed as a
 // nonoverlapping expansion (no rounding anywhere), after scaling each axis
@@ -53,6 +54,25 @@ bool orient2d_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign);
 // value of the double evaluation is an integer times a power of 2^u below
 // 2^53, so it is exact and its sign is the answer. Returns false otherwise.
 bool incircle_small_integer(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Sign& sign);
+// The expansion stages of dot_sign on their own (for tests): the exact sign
+// of (b - a) . (d - c) (2D: of (b - a) . (c - a)) as a sum of error-free
+// products. When the coordinate differences are exact (Knuth's
+// two-difference; grid points, which are massively at right angles) it sums
+// the 2 or 3 products of the differences, otherwise the 8 or 12 products of
+// the coordinates themselves, (b - a) . (d - c) = sum_i b_i d_i - b_i c_i -
+// a_i d_i + a_i c_i. Each factor group is scaled by one power of two (the
+// sign is unchanged). Returns false (no answer) when a coordinate is not
+// finite or the nonzero magnitudes of a group span more than about 2^400.
+bool dot_sign_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign);
+bool dot_sign_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign);
+// The expansion stage of orient3d on its own (for tests): when the nine
+// differences b - a, c - a, d - a are exact, the six triple products of
+// det(b - a, c - a, d - a), each split into four doubles without rounding
+// (two nested two-products), summed as an expansion; each axis (column) is
+// scaled by a power of two first. Returns false when a difference is not
+// exact (then GMP decides) or a column's nonzero magnitudes span more than
+// about 2^250 (triple products must stay far from underflow).
+bool orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign);
 }  // namespace detail
 
 // Positive when a, b, c turn counter-clockwise: sign of det(b - a, c - a).
@@ -112,7 +132,8 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e);
 
 // Sign of the dot product (b - a) . (c - a): Positive when the angle bac is
 // acute, Zero when right, Negative when obtuse. Inline double filter (error
-// bound 8 eps times the permanent), then GMP.
+// bound 8 eps times the permanent), then the expansion stage
+// (detail::dot_sign_expansion), then GMP.
 inline Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
   const double l = ux * vx, r = uy * vy;
@@ -126,10 +147,26 @@ inline Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
   }
   return detail::dot_sign_after_filter(a, b, c);
 }
-Sign dot_sign(Vec3 a, Vec3 b, Vec3 c);
 
-// Sign of (b - a) . (d - c) for two independent directions.
-Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// Sign of (b - a) . (d - c) for two independent directions. Inline double
+// filter (error bound 8 eps times the permanent; the quality fields call this
+// twelve times per tetrahedron), then the expansion stage, then GMP.
+inline Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = d.x - c.x, vy = d.y - c.y, vz = d.z - c.z;
+  const double px = ux * vx, py = uy * vy, pz = uz * vz;
+  const double det = px + py + pz, permanent = std::abs(px) + std::abs(py) + std::abs(pz);
+  if (permanent > detail::kTinyPermanent) {
+    const double bound = 8 * detail::kPredicateEps * permanent;
+    if (det > bound) return Sign::Positive;
+    if (-det > bound) return Sign::Negative;
+  } else if (permanent == 0) {
+    return Sign::Zero;
+  }
+  return detail::dot_sign_after_filter(a, b, c, d);
+}
+// Sign of (b - a) . (c - a), as in 2D.
+inline Sign dot_sign(Vec3 a, Vec3 b, Vec3 c) { return dot_sign(a, b, a, c); }
 
 // Sign of a - b for two coordinates (trivially exact; named for clarity).
 constexpr Sign compare(double a, double b) { return a > b ? Sign::Positive : (a < b ? Sign::Negative : Sign::Zero); }
