@@ -179,6 +179,18 @@ bool fits(const Loop& C, const Loop& outer, const std::vector<Loop>& obstacles) 
 // ---------------------------------------------------------------------------
 // Shapes.
 
+double closest_pair(const Loop& A, const std::vector<const Loop*>& B, Vec2& from, Vec2& to);
+
+// The distance (double arithmetic: a sampling criterion, not a validity
+// check) from C to the outer loop and every obstacle is at least `clearance`.
+bool clear_of(const Loop& C, const Loop& outer, const std::vector<Loop>& obstacles, double clearance) {
+  if (clearance <= 0) return true;
+  std::vector<const Loop*> others{&outer};
+  for (const Loop& O : obstacles) others.push_back(&O);
+  Vec2 from, to;
+  return closest_pair(C, others, from, to) >= clearance;
+}
+
 // Star loop about `centre`: m polar angles with random gaps (each at most
 // about 0.45 turn, so the centre is in the kernel), radii in [rmin, rmax].
 Loop star_loop(Rng& rng, Vec2 centre, int m, double rmin, double rmax, std::vector<double>* angles_out = nullptr,
@@ -308,7 +320,7 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
     star_loop(rng, {}, n, 0.35, 1.0, &angles, &radii);
     // Occasional deep notches make the loop strongly nonconvex.
     for (double& r : radii)
-      if (rng.chance(0.12)) r *= 0.3;
+      if (rng.chance(o.notch_probability)) r *= 0.3;
     int spikes = 0;
     std::vector<char> locked(angles.size(), 0);  // spike vertices keep their fine position
     if (rng.chance(o.spike_probability)) {
@@ -352,7 +364,7 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
   const int want_holes = rng.integer(0, std::max(0, o.max_holes));
   for (int h = 0, attempts = 0; h < want_holes && attempts < 60 * want_holes; ++attempts) {
     const Vec2 c = snap(Vec2{rng.uniform(-0.8, 0.8), rng.uniform(-0.8, 0.8)}, bits);
-    const double rho = rng.uniform(0.04, 0.25);
+    const double rho = rng.uniform(o.min_hole_radius, o.max_hole_radius);
     const int m = rng.integer(std::max(3, o.min_hole_vertices), std::max(o.min_hole_vertices, o.max_hole_vertices));
     std::vector<double> angles, radii;
     star_loop(rng, c, m, 0.45 * rho, rho, &angles, &radii);
@@ -363,7 +375,7 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
       insert_spike(rng, angles, radii, locked, rho, o.min_spike_degrees, o.max_spike_degrees, true);
     Loop C = from_polar(c, angles, radii);
     for (Vec2& p : C) p = snap(p, bits);
-    if (!strict_kernel_point(c, C) || !fits(C, outer, holes)) continue;
+    if (!strict_kernel_point(c, C) || !fits(C, outer, holes) || !clear_of(C, outer, holes, o.min_clearance)) continue;
     Vec2 centre = c;
     if (rng.chance(o.near_touch_probability)) {
       const double gap = o.min_gap * (1 + 29 * rng.unit() * rng.unit());
@@ -479,11 +491,13 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
 
   // Height: a dyadic value in [1/16, 2]; small heights with a wide frustum
   // give sharp dihedral angles at the top edges.
-  R.height = snap(rng.chance(0.2) ? rng.uniform(0.0625, 0.25) : rng.uniform(0.25, 2.0), 6);
+  R.height = snap(rng.chance(o.thin_probability) ? rng.uniform(0.0625, 0.25) : rng.uniform(o.min_height, o.max_height), 6);
   if (rng.chance(o.frustum_probability)) {
     static constexpr double kScales[] = {0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.25, 1.5, 2.0};
-    R.top_scale = kScales[rng.integer(0, 8)];
+    const double scale = kScales[rng.integer(0, 8)];
     R.centre = snap(Vec2{rng.uniform(-0.25, 0.25), rng.uniform(-0.25, 0.25)}, 8);
+    if (o.min_top_scale <= scale && scale <= o.max_top_scale) R.top_scale = scale;
+    else R.centre = Vec2{};  // a right prism, as if no frustum had been drawn
   }
   if (!R.right_prism()) {
     // Keep the walls at least ~2 degrees from horizontal (tan 2 deg ~ 0.035):
@@ -512,7 +526,8 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
     const int want = rng.integer(1, 2);
     for (int k = 0, attempts = 0; k < want && attempts < 80; ++attempts) {
       Cavity cav;
-      double z0 = snap(h * rng.uniform(0.1, 0.55), bits), z1 = snap(z0 + h * rng.uniform(0.1, 0.35), bits);
+      double z0 = snap(h * rng.uniform(0.1, 0.55), bits),
+             z1 = snap(z0 + h * rng.uniform(o.min_cavity_height, o.max_cavity_height), bits);
       const bool near = rng.chance(o.near_touch_probability);
       const double zgap = std::max(std::ldexp(1.0, -bits), snap(h * o.polygon.min_gap * (1 + 9 * rng.unit()), bits));
       if (near && rng.chance(0.5)) z0 = zgap;
@@ -523,11 +538,12 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
       const Vec2 fc = snap(Vec2{rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7)}, bits);
       const bool polygonal = R.right_prism() && rng.chance(o.polygon_cavity_probability);
       if (polygonal) {
-        cav.footprint = star_loop(rng, fc, rng.integer(3, 7), 0.03, 0.15);
+        cav.footprint = star_loop(rng, fc, rng.integer(3, 7), 1.5 * o.min_cavity_half_width, o.max_cavity_half_width);
         for (Vec2& p : cav.footprint) p = snap(p, bits);
         if (!strict_kernel_point(fc, cav.footprint)) continue;
       } else {
-        const double hx = snap(rng.uniform(0.02, 0.15), bits), hy = snap(rng.uniform(0.02, 0.15), bits);
+        const double hx = snap(rng.uniform(o.min_cavity_half_width, o.max_cavity_half_width), bits),
+                     hy = snap(rng.uniform(o.min_cavity_half_width, o.max_cavity_half_width), bits);
         cav.footprint = {fc + Vec2{-hx, -hy}, fc + Vec2{hx, -hy}, fc + Vec2{hx, hy}, fc + Vec2{-hx, hy}};
         cav.box = true;
       }
@@ -549,7 +565,7 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
         xhi = snap(xhi, bits) + 2 * step, yhi = snap(yhi, bits) + 2 * step;
         check = {{xlo, ylo}, {xhi, ylo}, {xhi, yhi}, {xlo, yhi}};
       }
-      if (!fits(check, base.loops[0], obs)) continue;
+      if (!fits(check, base.loops[0], obs) || !clear_of(check, base.loops[0], obs, o.polygon.min_clearance)) continue;
       if (R.right_prism() && near && rng.chance(0.5)) {
         const Vec2 t = push_near(check, base.loops[0], obs, o.polygon.min_gap * (1 + 9 * rng.unit()), bits);
         cav.footprint = translated(cav.footprint, t);
@@ -641,6 +657,32 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
   }
   R.plc = std::move(plc);
   return R;
+}
+
+PolyhedronOptions bounded_feature_polyhedron_options() {
+  PolyhedronOptions o;
+  o.polygon.min_vertices = 4;
+  o.polygon.max_vertices = 7;
+  o.polygon.max_holes = 1;
+  o.polygon.min_hole_vertices = 3;
+  o.polygon.max_hole_vertices = 5;
+  o.polygon.min_hole_radius = 0.15;
+  o.polygon.max_hole_radius = 0.3;
+  o.polygon.min_spike_degrees = 12;
+  o.polygon.max_spike_degrees = 30;
+  o.polygon.min_gap = 1.0 / 16;
+  o.polygon.min_clearance = 1.0 / 16;
+  o.thin_probability = 0;
+  o.min_height = 0.75;
+  o.max_height = 1.5;
+  o.min_top_scale = 0.5;
+  o.max_top_scale = 1.5;
+  o.cavity_probability = 0.4;
+  o.min_cavity_half_width = 0.1;
+  o.max_cavity_half_width = 0.2;
+  o.min_cavity_height = 0.25;
+  o.max_cavity_height = 0.4;
+  return o;
 }
 
 Plc3 random_polyhedron(std::uint64_t seed, const PolyhedronOptions& options) {

@@ -42,6 +42,15 @@ struct PolygonOptions {
   double near_touch_probability = 0.4;  // per hole: push it to a tiny gap from its neighbour
   double min_gap = 1e-3;             // relative to the outer radius; gaps drawn in [min_gap, 30 min_gap]
   double snap_probability = 0.15;    // per vertex: snap to the coarse dyadic grid (multiples of 1/8)
+  // Hole radii (star loops about a random centre) drawn in [min, max],
+  // relative to the outer radius (~1).
+  double min_hole_radius = 0.04;
+  double max_hole_radius = 0.25;
+  double notch_probability = 0.12;   // per outer vertex: radius x 0.3 (a deep notch)
+  // A hole (or cavity footprint) drawn closer than this to another loop is
+  // redrawn (relative to the outer radius; 0: only disjointness is asked).
+  // Near-touching moves still go down to min_gap.
+  double min_clearance = 0;
   int grid_bits = 20;                // fine grid: coordinates are multiples of 2^-grid_bits (before scaling)
   bool shuffle_ids = true;           // random vertex numbering, segment order and loop directions
   bool random_scale = true;          // multiply by 2^j, j in [-3, 3], and translate by a dyadic offset
@@ -75,7 +84,32 @@ struct PolyhedronOptions {
   double polygon_cavity_probability = 0.4;  // a cavity is a small prism instead of a box (right prisms only)
   double near_touch_probability = 0.3;      // a cavity placed at a tiny gap from the boundary
   bool shuffle_ids = true;            // random vertex numbering, facet order and loop directions
+  // Height (before the random scale; the base's outer radius is <= 1.15):
+  // with thin_probability in [1/16, 1/4] (a thin slab), else in
+  // [min_height, max_height]; raised for flat frustum walls (see the .cpp).
+  double thin_probability = 0.2;
+  double min_height = 0.25;
+  double max_height = 2.0;
+  // Frustum top scales are taken from {1/4, 3/8, ..., 7/8, 5/4, 3/2, 2}; a
+  // draw outside [min_top_scale, max_top_scale] becomes a right prism.
+  double min_top_scale = 0.25;
+  double max_top_scale = 2.0;
+  // Cavity size: box half-widths in [min, max] (a polygonal cavity's radii
+  // in [1.5 min, max]), and the cavity's height as a fraction of the
+  // solid's height in [min, max].
+  double min_cavity_half_width = 0.02;
+  double max_cavity_half_width = 0.15;
+  double min_cavity_height = 0.1;
+  double max_cavity_height = 0.35;
 };
+
+// Options of the "bounded feature" family: every feature (edge, gap, hole,
+// cavity, wall thickness) is at least about 1/16 of the bounding box, corner
+// and dihedral angles at least ~10 degrees (spikes 12-30 degrees, frustum
+// walls at most 1/2 off vertical), still nonconvex (notches, spikes),
+// with through-holes and cavities. Cheap to mesh (see
+// tests/unit/mesh3d/random_polyhedra_test.cpp for the measured cost).
+PolyhedronOptions bounded_feature_polyhedron_options();
 
 // A cavity: the prism footprint x [z0, z1]; footprint counter-clockwise.
 struct Cavity {

@@ -11,21 +11,31 @@
 // generator's output, tet_mesh must return (an exception is a failure,
 // MeshNotSupported included), check_mesh must say valid, and the aspect bound
 // must hold. A failing seed is either reported by an EXPECT or listed, with
-// its failure class, in kKnownFailures below (the lead's decision; the list
+// its failure class, in known_failures() below (the lead's decision; the list
 // may only shrink: a seed failing outside it, or failing with another class,
 // fails the test).
 //
-// Test time. The seeds are sharded (kShards TEST_P instances of kSeedsPerShard
-// seeds; gtest_discover_tests in tests/CMakeLists.txt makes each instance its
-// own ctest, so `ctest -j` runs shards in parallel). The random solids cost
-// 15-84 s cpu each in Release (a pentagonal prism is already ~3 s and 300k
-// tetrahedra), far above the ~0.3 s a seed may take in the default suite, so
-// only the Smoke test (2 seeds of cheaper options) runs by default; the 200
-// seeds run with --gtest_also_run_disabled_tests (as the slow corpus models
-// of generic_corpus_test.cpp). Per-seed lines and a summary per shard are
-// printed; when several shards run in one process an overall summary is
-// printed at the end.
+// Two families (tests/support/random_domains.hpp):
+//  - "bounded": bounded_feature_polyhedron_options(), every feature at least
+//    ~1/16 of the bounding box, spikes 12-30 deg, through-holes and cavities;
+//    seeds 0..199 in kBoundedShards TEST_P instances of kBoundedSeedsPerShard
+//    (gtest_discover_tests makes each its own ctest).
+//  - "harsh": harsh_options() below, 1e-2 gaps and 5-degree spikes; seeds
+//    0..199 in kHarshShards instances of kHarshSeedsPerShard.
+// Test time. Measured 2026-12-01 (Release, shared 2-core machine, cpu s per
+// seed including check_mesh, which costs about as much as tet_mesh on these
+// slanted facets): bounded seeds 0-29 and 100-121: 0.8-19 s, median 7.0 s
+// (125k-2.2M tetrahedra; 6 of the 52 seeds above 20 s; a cube is 0.33 s and
+// 51k), so ~25-30 cpu minutes for the 200; harsh seeds 15-84 s. So both families are
+// DISABLED (run them with --gtest_also_run_disabled_tests, e.g.
+// --gtest_filter='*Bounded*'), and the default suite runs kSuiteSeeds, a
+// FIXED hand-picked list of cheap bounded seeds (picked for cost only, from
+// the measurement above; the other seeds are not known to fail). Per-seed
+// lines and a summary per shard are printed; when several shards run in one
+// process an overall summary is printed at the end.
 #include <gtest/gtest.h>
+
+#include "aspect_alpha_property.hpp"
 
 #include <algorithm>
 #include <array>
@@ -36,6 +46,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pqmesh/alpha.hpp"
@@ -49,7 +60,7 @@
 namespace pqmesh::test {
 namespace {
 
-// Generator settings for the 200 seeds: the defaults of random_domains.hpp
+// The "harsh" family: the defaults of random_domains.hpp
 // made cheaper, keeping every feature the issue asks for (nonconvex outlines
 // with deep notches, up to 2 through-holes, cavities, spikes and notches of
 // 5-20 degrees, near-touching gaps of 1e-2..0.3 relative to the outer radius,
@@ -58,7 +69,7 @@ namespace {
 // 15-84 s cpu per meshed seed, so ~2-3 cpu hours for all 200. With the
 // generator defaults (24 outer vertices, 4 holes, 1-degree spikes, 1e-3 gaps)
 // single seeds take minutes.
-PolyhedronOptions corpus_options() {
+PolyhedronOptions harsh_options() {
   PolyhedronOptions o;
   o.polygon.max_vertices = 10;
   o.polygon.max_holes = 2;
@@ -68,53 +79,30 @@ PolyhedronOptions corpus_options() {
   return o;
 }
 
-// The default-suite smoke run: 5-6 vertex outlines, no holes, no cavities,
-// spikes >= 10 degrees, gaps >= 0.1 (still frustums, thin slabs, random
-// scale). Measured 2026-12-01 on seeds 0-19: 160k-2.8M tetrahedra, 2.8-33 s
-// cpu per seed; seeds 0 and 1 take ~3.7 s each.
-PolyhedronOptions smoke_options() {
-  PolyhedronOptions o;
-  o.polygon.max_vertices = 6;
-  o.polygon.max_holes = 0;
-  o.polygon.min_spike_degrees = 10;
-  o.polygon.min_gap = 1e-1;
-  o.polygon.max_hole_vertices = 6;
-  o.cavity_probability = 0;
-  return o;
-}
+constexpr int kBoundedShards = 40;
+constexpr int kBoundedSeedsPerShard = 5;  // 200 seeds: 0..199
+constexpr int kHarshShards = 20;
+constexpr int kHarshSeedsPerShard = 10;   // 200 seeds: 0..199
+// The default-suite seeds of the bounded family, picked for cost (measured
+// 2026-12-01, Release, cpu s including check_mesh: seed 7 a frustum, 177k
+// tets, 2.1 s; seed 9 a slab with a box cavity, 606k tets, 2.9 s, the
+// largest aspect * alpha measured, see aspect_alpha_property.hpp; seed 10 a
+// 5-gon prism, 248k tets, 1.4 s).
+constexpr std::array<std::uint64_t, 3> kSuiteSeeds = {7, 9, 10};
 
-constexpr int kShards = 20;
-constexpr int kSeedsPerShard = 10;  // kShards * kSeedsPerShard = 200 seeds: 0..199
-constexpr int kSmokeSeeds = 2;      // the default-suite instance: seeds 0..kSmokeSeeds-1
-
-// C of the property max aspect ratio <= C / alpha (alpha in radians). A
-// MEASURED CEILING, not a derived value: the largest aspect * alpha over the
-// seeds that mesh validly, rounded up with a margin of ~10%, measured
-// 2026-12-01 (build of that day, before the "sliver" work on src/tet3d;
-// the lead lowers it as the worst tetrahedra improve). The bound the thesis
-// proves (Theorem 7) has an unspecified "true constant" k; this is ours.
-// Measured maxima: 187,044 (smoke options, seed 12: alpha 9.89 deg, aspect
-// 1.08e6, unwarped fallback), 23,967 (smoke options, seed 6, warped), 7,323
-// (corpus options, seed 0). The median over the 22 valid seeds measured is
-// ~300: the ceiling is set by a few slivers.
-constexpr double kAspectAlphaCeiling = 2.1e5;
-
-// Seeds that fail today, with the class of their failure (failure_class
-// below). Listed so that the lead can decide; the test fails on any seed that
-// fails outside this list or with a different class, and prints the seeds of
-// the list that now pass (remove them). From the measurement of 2026-12-01,
-// which covered only seeds 0-3 and 100-103 of corpus_options (the time box):
-// the other seeds are unmeasured, and by the smoke-options rate (6 of 20
-// seeds threw) about a quarter of them can be expected to fail.
-//   "InternalError tree_impl.hpp:46": "root offset along axis a is too fine
-//   for exact box planes". The Tree's exactness bound (|origin| + 3S + |off|)
-//   is stricter than the one choose_generic_root_cube ensures
-//   (max(|origin|, |origin + S|) + 2S + S/32) when the root origin is
-//   negative, i.e. for inputs translated to negative coordinates.
-const std::map<std::uint64_t, std::string>& known_failures() {
-  static const std::map<std::uint64_t, std::string> k = {
-      {101, "InternalError tree_impl.hpp:46"},
-      {103, "InternalError tree_impl.hpp:46"},
+// Seeds that fail today, per family, with the class of their failure
+// (failure_class below). The test fails on any seed that fails outside this
+// list or with a different class, and prints the listed seeds that now pass
+// (remove them). Measured 2026-12-01 after the lead's tree root-offset fix:
+// bounded seeds 0-29 and 100-121 mesh validly except 1, 5, 6, 21, 114, 118,
+// stopped at 20 s cpu (unmeasured, not failed); 16 and 112 by the unwarped
+// fallback. The harsh
+// seeds 101 and 103 failed with the root-offset error that fix removed,
+// unverified (their cost).
+const std::map<std::pair<std::string, std::uint64_t>, std::string>& known_failures() {
+  static const std::map<std::pair<std::string, std::uint64_t>, std::string> k = {
+      {{"harsh", 101}, "InternalError tree_impl.hpp:46"},
+      {{"harsh", 103}, "InternalError tree_impl.hpp:46"},
   };
   return k;
 }
@@ -259,59 +247,80 @@ std::vector<SeedRecord>& all_records() {
 class OverallSummary : public ::testing::Environment {
  public:
   void TearDown() override {
-    if (all_records().size() > static_cast<std::size_t>(kSeedsPerShard)) print_summary("all shards run", all_records());
+    if (all_records().size() > static_cast<std::size_t>(kHarshSeedsPerShard)) print_summary("all shards run", all_records());
   }
 };
 [[maybe_unused]] ::testing::Environment* const kOverallSummary = ::testing::AddGlobalTestEnvironment(new OverallSummary);
 
-void run_seeds(std::uint64_t first, std::uint64_t count, const PolyhedronOptions& options, bool use_known_failures,
-               const char* title) {
+void run_seeds(const std::vector<std::uint64_t>& seeds, const std::string& family, const PolyhedronOptions& options,
+               const std::string& title) {
   std::vector<SeedRecord> records;
-  for (std::uint64_t seed = first; seed < first + count; ++seed) {
+  for (const std::uint64_t seed : seeds) {
     const SeedRecord r = mesh_seed(seed, options);
     print_record(r);
     std::fflush(stdout);
     records.push_back(r);
     all_records().push_back(r);
 
-    const auto known = use_known_failures ? known_failures().find(seed) : known_failures().end();
+    const auto known = known_failures().find({family, seed});
     if (r.status != SeedRecord::Status::Valid) {
       if (known != known_failures().end() && known->second == r.failure) continue;  // listed, same class
-      ADD_FAILURE() << "seed " << seed << " failed: " << r.failure << "\n"
+      ADD_FAILURE() << family << " seed " << seed << " failed: " << r.failure << "\n"
                     << describe_polyhedron(seed, options) << "\n"
                     << r.detail;
       continue;
     }
     if (known != known_failures().end())
-      std::printf("seed %llu is in kKnownFailures (%s) but now meshes validly: remove it\n",
+      std::printf("%s seed %llu is in known_failures (%s) but now meshes validly: remove it\n", family.c_str(),
                   static_cast<unsigned long long>(seed), known->second.c_str());
     // Theorem 7: aspect ratio <= C / alpha for every tetrahedron.
-    EXPECT_LE(r.aspect_alpha(), kAspectAlphaCeiling)
-        << "seed " << seed << ": max aspect " << r.aspect << " at alpha " << r.alpha << " rad\n"
+    EXPECT_LE(r.aspect_alpha(), kAspectAlphaC)
+        << family << " seed " << seed << ": max aspect " << r.aspect << " at alpha " << r.alpha << " rad\n"
         << describe_polyhedron(seed, options);
   }
-  print_summary(title, records);
+  print_summary(title.c_str(), records);
 }
 
-class RandomPolyhedra : public ::testing::TestWithParam<int> {};
+std::vector<std::uint64_t> seed_range(std::uint64_t first, std::uint64_t count) {
+  std::vector<std::uint64_t> seeds;
+  for (std::uint64_t s = first; s < first + count; ++s) seeds.push_back(s);
+  return seeds;
+}
 
-TEST_P(RandomPolyhedra, MeshValidWithAspectBelowCOverAlpha) {
+std::string shard_title(const char* family, int shard, int per_shard) {
+  const int first = shard * per_shard;
+  return std::string(family) + " shard " + std::to_string(shard) + " (seeds " + std::to_string(first) + ".." +
+         std::to_string(first + per_shard - 1) + ")";
+}
+
+class RandomPolyhedraBounded : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomPolyhedraBounded, MeshValidWithAspectBelowCOverAlpha) {
   const int shard = GetParam();
-  const std::uint64_t first = static_cast<std::uint64_t>(shard) * kSeedsPerShard;
-  const std::string title = "shard " + std::to_string(shard) + " (seeds " + std::to_string(first) + ".." +
-                            std::to_string(first + kSeedsPerShard - 1) + ")";
-  run_seeds(first, kSeedsPerShard, corpus_options(), true, title.c_str());
+  run_seeds(seed_range(static_cast<std::uint64_t>(shard) * kBoundedSeedsPerShard, kBoundedSeedsPerShard), "bounded",
+            bounded_feature_polyhedron_options(), shard_title("bounded", shard, kBoundedSeedsPerShard));
 }
 
-INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedra, ::testing::Range(0, kShards));
+INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedraBounded, ::testing::Range(0, kBoundedShards));
 
-TEST(RandomPolyhedraSmoke, FirstSeedsMeshValidWithAspectBelowCOverAlpha) {
-  run_seeds(0, kSmokeSeeds, smoke_options(), false, "smoke (seeds 0..1, smoke options)");
+class RandomPolyhedraHarsh : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomPolyhedraHarsh, MeshValidWithAspectBelowCOverAlpha) {
+  const int shard = GetParam();
+  run_seeds(seed_range(static_cast<std::uint64_t>(shard) * kHarshSeedsPerShard, kHarshSeedsPerShard), "harsh",
+            harsh_options(), shard_title("harsh", shard, kHarshSeedsPerShard));
+}
+
+INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedraHarsh, ::testing::Range(0, kHarshShards));
+
+TEST(RandomPolyhedraSuite, BoundedSeedsMeshValidWithAspectBelowCOverAlpha) {
+  run_seeds(std::vector<std::uint64_t>(kSuiteSeeds.begin(), kSuiteSeeds.end()), "bounded",
+            bounded_feature_polyhedron_options(), "suite (bounded seeds 7, 9, 10)");
 }
 
 // The list of known failures may only shrink: its size is pinned here, so
 // adding a seed is a visible change of this number.
-TEST(RandomPolyhedraSmoke, KnownFailureListDoesNotGrow) {
+TEST(RandomPolyhedraSuite, KnownFailureListDoesNotGrow) {
   constexpr std::size_t kKnownFailureCount = 2;
   std::printf("known failures listed: %zu\n", known_failures().size());
   EXPECT_LE(known_failures().size(), kKnownFailureCount);
