@@ -3,8 +3,8 @@
 // it: every tetrahedron of tet_mesh (default options) has aspect ratio
 // <= C / alpha, alpha the sharpest interior angle of P (compute_alpha,
 // radians), with ONE constant C for every test input (the random polyhedra
-// of random_polyhedra_test.cpp and the fast corpus models of
-// aspect_alpha_property_test.cpp).
+// of random_polyhedra_test.cpp and the corpus models of
+// generic_corpus_test.cpp).
 //
 // C is a MEASURED CEILING, not a derived value: the thesis proves the bound
 // with an unspecified constant. Value and margin are stated where it is
