@@ -620,6 +620,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   out.warp_parallel_left = warps.parallel_left;
   out.warp_parallel = warps.parallel;
   out.warp_centres = warps.centres;
+  out.warp_shortened = warps.shortened;
   return out;
 }
 

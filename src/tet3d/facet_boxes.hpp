@@ -101,6 +101,7 @@ struct BoxMesh {
   std::int64_t warp_parallel = 0;  // first-pass moves of box-edge pieces parallel to E
   std::int64_t warp_centres = 0;   // square centres carried with their corners (among `warped`)
   std::int64_t warp_rebuilds = 0;  // warp tables rebuilt after freezing points of inverted tetrahedra
+  std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
 };
 
 // The squares of the job's box faces (face order (axis 0..2) x (lower,

@@ -36,7 +36,11 @@
 // it passes (orient3d(a, b, v, w), Cases B/D, cut_square_edge.hpp), against
 // w's current position. A refused full move falls back to the first pass
 // alone, then to the second pass alone from the prewarped point
-// (`fallback`); else v stays (`conflicts`). The caller may freeze points
+// (`fallback`), then to 1/2, 1/4, 1/8 or 1/16 of the second pass alone, if
+// accepted and no nearer than the prewarped point to any facet of v's boxes
+// (in units of h/16, capped at 1) and no ring segment from v nearer to a P
+// edge between them (h/8), the smallest of these clearances larger
+// (`shortened`); else v stays (`conflicts`). The caller may freeze points
 // whose move inverted a tetrahedron (`frozen`, facet_boxes.cpp).
 //
 // Square centres (gap filled): the thesis keeps the centre c of a Case A

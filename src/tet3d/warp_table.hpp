@@ -35,6 +35,7 @@ class WarpTable {
   std::int64_t parallel_left = 0;  // first-pass moves not made: E on the box edge's line
   std::int64_t frozen_left = 0;   // left: in the caller's frozen set (their move inverted a tetrahedron)
   std::int64_t centres = 0;       // square centres carried with their corners (among size())
+  std::int64_t shortened = 0;     // moved by 1/2..1/16 of a refused second-pass move (among size())
 
  private:
   std::unordered_map<GridPoint, Warp, GridPointHash> map_;

@@ -1,11 +1,13 @@
-// Two warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
-// §12.5): a face square's centre is carried with its corners (warp.hpp), and
-// a P edge crosses a square whose corners moved where it meets their mean
-// plane (warped_crossing.hpp). Expected points are derived by hand from the
+// Three warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
+// §12.5): a face square's centre is carried with its corners (warp.hpp), a
+// move refused because it would cross another facet's plane is shortened
+// (warp.hpp), and a P edge crosses a square whose corners moved where it
+// meets their mean plane (warped_crossing.hpp). Expected points are derived by hand from the
 // configuration (the warped squares below are planar quadrilaterals, so the
 // crossing is a line-plane intersection computed here independently).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -94,6 +96,67 @@ TEST(WarpRules, SquareCentreOnAFacetPlaneStays) {
   EXPECT_NE(w.find(corner_of(t, 1)), nullptr);
   EXPECT_EQ(w.find(s.centre()), nullptr);
   EXPECT_EQ(w.centres, 0);
+}
+
+// The right prism over the polygon `xz` (in the x-z plane, counter-
+// clockwise) for y in [y0, y1]: the side quad of polygon edge i is facet i,
+// then the two caps.
+Domain3 prism_xz(const std::vector<std::array<double, 2>>& xz, double y0, double y1) {
+  Plc3 plc;
+  const int n = static_cast<int>(xz.size());
+  for (const double y : {y0, y1})
+    for (const auto& q : xz) plc.vertices.push_back({q[0], y, q[1]});
+  for (int i = 0; i < n; ++i) {
+    Facet3 f;
+    f.loops.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
+    plc.facets.push_back(f);
+  }
+  Facet3 lo, hi;
+  lo.loops.emplace_back();
+  hi.loops.emplace_back();
+  for (int i = 0; i < n; ++i) {
+    lo.loops[0].push_back(i);
+    hi.loops[0].push_back(n + i);
+  }
+  plc.facets.push_back(lo);
+  plc.facets.push_back(hi);
+  return make_domain(plc);
+}
+
+// The facet of d containing x (distance 0).
+int facet_at(const Domain3& d, Vec3 x) {
+  for (int f = 0; f < static_cast<int>(d.plc.facets.size()); ++f)
+    if (facet_distance(d, f, x) == 0) return f;
+  return -1;
+}
+
+TEST(WarpRules, RefusedMoveIsShortened) {
+  // P: a step, [-1, 5] x [-1, 2] x [-2, 0.01] joined to [5, 6] x [-1, 2] x
+  // [-2, -0.03]. The box vertex v = (0, 0, 0) (root cube [0, 1]^3, h = 1)
+  // uses the top facet F (z = 0.01, 0.01 < h/16 above v) and the lower top
+  // facet G (z = -0.03, 5 away: not close, but its plane is 0.03 below v).
+  // The second pass moves v h/16 along -z, across G's plane: refused (v's
+  // side of G decides its squares). No first pass (F and G share no edge).
+  // Shortened moves to z = -1/32, -1/64, -1/128, -1/256: the first crosses
+  // G's plane too; of the others the farthest from F is z = -1/64
+  // (clearance (0.01 + 1/64) / (1/16) = 0.41, against 0.16 unmoved).
+  const OctTree t(RootCube<3>{{0, 0, 0}, 1});
+  const CornerSet corners(t, t.leaves());
+  const Domain3 d = prism_xz({{-1, -2}, {6, -2}, {6, -0.03}, {5, -0.03}, {5, 0.01}, {-1, 0.01}}, -1, 2);
+  const int f = facet_at(d, {0, 0.5, 0.01}), g = facet_at(d, {5.5, 0.5, -0.03});
+  ASSERT_GE(f, 0);
+  ASSERT_GE(g, 0);
+  const std::vector<WarpCandidate> cand = {
+      {corner_of(t, 0), {f, g}, {corner_of(t, 1), corner_of(t, 2)}, {}, 0}};
+  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  const Warp* v = w.find(corner_of(t, 0));
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->at.x, 0.0);
+  EXPECT_EQ(v->at.y, 0.0);
+  EXPECT_EQ(v->at.z, -1.0 / 64);
+  EXPECT_EQ(w.shortened, 1);
+  EXPECT_EQ(w.conflicts, 0);
+  EXPECT_EQ(w.fallback, 0);
 }
 
 TEST(WarpRules, EdgeCrossingMovesOntoTheWarpedSquare) {
