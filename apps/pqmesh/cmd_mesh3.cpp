@@ -110,7 +110,8 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << "mesh       " << mesh.tetrahedra.size() << " tetrahedra, " << mesh.vertices.size() << " vertices, "
             << mesh.faces.size() << " boundary triangles\n"
             << "quality    max aspect ratio " << fmt4(q.max_aspect) << " (tetrahedron " << q.argmax_aspect
-            << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max " << fmt4(q.max_dihedral) << " deg\n"
+            << "; measured bound C / alpha = " << fmt4(kMeasuredAspectAlphaC / alpha.radians) << ", C = "
+            << fmt4(kMeasuredAspectAlphaC) << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max " << fmt4(q.max_dihedral) << " deg\n"
             << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
             << " cells); tetrahedra / I3 = "
             << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.tetrahedra.size()) / run.lfs.value) : "-")
