@@ -90,6 +90,14 @@ KeyHash hash_key(const BoxKey<D>& k) {
   return KeyHash{x + sub, static_cast<std::uint32_t>(x >> 32) ^ (sub * 0x9E3779B9u)};
 }
 
+// Hash of child c of an aligned key k from the hash of its child 0: the children
+// of one cell share the mixed part of hash_key (q >> 2 is k's cell, q & 1 = 0) and
+// differ only in the child index (sub = c), so
+// hash_key(k.child(c)) == sibling_hash(hash_key(k.child(0)), c). split() hashes once.
+inline KeyHash sibling_hash(KeyHash first, unsigned c) {
+  return KeyHash{first.pos + c, first.tag ^ (c * 0x9E3779B9u)};
+}
+
 // z-order ("Morton") comparison of two box origins, with axis 0 the least
 // significant interleaved bit (so the children of a box are in z-order by index).
 // Compares the origins only; callers break ties.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tree/key.hpp"
+#include "tree/large_page_allocator.hpp"
 
 namespace pqmesh::detail {
 
@@ -41,6 +42,16 @@ class KeyIndex {
 
   std::size_t size() const { return count_; }
 
+  // Performance hint only: brings the home slot of a key with hash h into cache
+  // (a later insert or find of that key then does not wait for memory). The empty
+  // volatile asm keeps the hint: GCC 12 otherwise deems the call side-effect free
+  // and deletes it together with the hash computed for it.
+  void prefetch(KeyHash h) const {
+    const Slot* s = &slots_[h.pos & (slots_.size() - 1)];
+    __builtin_prefetch(s);
+    asm volatile("" : : "r"(s));
+  }
+
   // Grows the table now so that n keys fit without further growth; never shrinks.
   template <class HashOf>
   void reserve(std::size_t n, HashOf&& hash_of) {
@@ -62,14 +73,14 @@ class KeyIndex {
 
   template <class HashOf>
   void grow(HashOf&& hash_of) {
-    std::vector<Slot> old(slots_.size() * 2);
+    std::vector<Slot, LargePageAllocator<Slot>> old(slots_.size() * 2);
     old.swap(slots_);
     // Re-insert in old slot order: deterministic.
     for (const Slot& s : old)
       if (s.node >= 0) place(hash_of(s.node), s.node);
   }
 
-  std::vector<Slot> slots_;
+  std::vector<Slot, LargePageAllocator<Slot>> slots_;
   std::size_t count_ = 0;
 };
 

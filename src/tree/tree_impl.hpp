@@ -50,7 +50,7 @@ Tree<D>::Tree(const RootCube<D>& root) : root_(root) {
   }
   for (std::int32_t l = 0; l <= max_level_; ++l) half_side_[static_cast<std::size_t>(l)] = std::ldexp(1.0, root_exp_ - l - 1);
   nodes_.push_back(Node{});
-  link_key_new(0, 0);
+  link_key_new(0, 0, detail::hash_key(at(0).key));
   leaf_count_ = 1;
 }
 
@@ -89,17 +89,19 @@ std::int32_t Tree<D>::find(const Key& k) const {
 }
 
 template <int D>
-std::int32_t Tree<D>::link_key_new(std::int32_t id, std::uint8_t inherit) {
+std::int32_t Tree<D>::link_key_new(std::int32_t id, std::uint8_t inherit, detail::KeyHash h) {
   at(id).flags |= inherit;
   at(id).head = id;
-  index_.insert(detail::hash_key(at(id).key), id, [&](std::int32_t x) { return detail::hash_key(at(x).key); });
+  index_.insert(h, id, [&](std::int32_t x) { return detail::hash_key(at(x).key); });
   return id;
 }
 
 template <int D>
 std::int32_t Tree<D>::link_key(std::int32_t id, std::uint8_t inherit) {
-  const std::int32_t head = find(at(id).key);
-  if (head < 0) return link_key_new(id, inherit);
+  const Key& k = at(id).key;
+  const detail::KeyHash h = detail::hash_key(k);
+  const std::int32_t head = index_.find(h, [&](std::int32_t x) { return at(x).key == k; });
+  if (head < 0) return link_key_new(id, inherit, h);
   at(id).head = head;
   std::int32_t tail = head;
   while (at(tail).next_same >= 0) tail = at(tail).next_same;
@@ -157,6 +159,7 @@ std::int32_t Tree<D>::split(std::int32_t n) {
   // before (a merged box at an aligned child key needs absorbed grandchildren, whose
   // parents are those child keys), so a key with a single node skips the lookups.
   const bool fresh = at(head).next_same < 0;
+  const detail::KeyHash h0 = detail::hash_key(k.child(0));  // the others: sibling_hash
   const auto first = static_cast<std::int32_t>(nodes_.size());
   for (int c = 0; c < kChildren; ++c) {
     Node child;
@@ -165,7 +168,7 @@ std::int32_t Tree<D>::split(std::int32_t n) {
     nodes_.push_back(child);
     const std::int32_t id = first + c;
     if (fresh) {
-      link_key_new(id, inherit);
+      link_key_new(id, inherit, detail::sibling_hash(h0, static_cast<unsigned>(c)));
     } else {
       const std::int32_t h = link_key(id, inherit);
       if (h != id) update_mixed(h);

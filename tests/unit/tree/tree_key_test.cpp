@@ -41,6 +41,38 @@ TYPED_TEST(TreeKey, SplitGivesContiguousChildrenWithChildKeys) {
   EXPECT_THROW(t.split(0), InternalError);  // not a leaf any more
 }
 
+// split() hashes child 0 only and derives its siblings' hashes (key.hpp
+// sibling_hash); that must equal hashing each child key on its own, for random
+// aligned keys at shallow and deep levels (q up to 2^(level+1)).
+TYPED_TEST(TreeKey, SiblingHashEqualsTheChildsOwnHash) {
+  constexpr int D = TypeParam::value;
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 2000; ++trial) {
+    BoxKey<D> k;
+    k.level = static_cast<std::int32_t>(rng() % kTreeMaxLevel);
+    for (int a = 0; a < D; ++a) k.q[a] = 2 * static_cast<std::int64_t>(rng() % (std::uint64_t{1} << k.level));
+    const detail::KeyHash h0 = detail::hash_key(k.child(0));
+    for (int c = 0; c < (1 << D); ++c) {
+      const detail::KeyHash own = detail::hash_key(k.child(c));
+      const detail::KeyHash sib = detail::sibling_hash(h0, static_cast<unsigned>(c));
+      ASSERT_EQ(sib.pos, own.pos) << "level " << k.level << " child " << c;
+      ASSERT_EQ(sib.tag, own.tag) << "level " << k.level << " child " << c;
+    }
+  }
+}
+
+// prefetch_split is a hint: it accepts any id and changes nothing.
+TYPED_TEST(TreeKey, PrefetchSplitChangesNothing) {
+  constexpr int D = TypeParam::value;
+  auto t = test::unit_tree<D>();
+  t.prefetch_split(-1);
+  t.prefetch_split(5);
+  t.prefetch_split(0);
+  EXPECT_EQ(t.size(), 1);
+  const std::int32_t first = t.split(0);
+  for (int c = 0; c < (1 << D); ++c) EXPECT_EQ(t.find(t.key(first + c)), first + c);
+}
+
 // Root [-2, 2] x [4, 8] (x [-2, 2]): origin is a multiple of size/2 = 2. The level-3
 // cell (5, 3, 1) spans, by hand: x = -2 + 4*5/8 = 0.5 .. 1.0, y = 4 + 4*3/8 = 5.5 ..
 // 6.0, z = -2 + 4*1/8 = -1.5 .. -1.0.
