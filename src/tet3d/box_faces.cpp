@@ -23,8 +23,13 @@ CornerSet::CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves) 
     const BoxKey<3>& key = tree.key(n);
     if (!key.aligned()) throw InternalError("tet3d: merged (unaligned) leaf " + std::to_string(n));
     for (int k = 0; k < 8; ++k) {
-      const auto [it, fresh] = set_.try_emplace(key_corner(key, k), key.level);
-      if (!fresh) it->second = std::max(it->second, key.level);
+      const auto [id, fresh] = index_.insert(key_corner(key, k));
+      if (fresh) {
+        levels_.push_back(key.level);
+      } else {
+        std::int32_t& level = levels_[static_cast<std::size_t>(id)];
+        level = std::max(level, key.level);
+      }
     }
   }
 }
@@ -79,18 +84,24 @@ void face_squares(const BoxKey<3>& key, int axis, bool upper, const CornerSet& c
   collect_squares(s, corners, out);
 }
 
-std::vector<GridPoint> square_ring(const FaceSquare& s, const CornerSet& corners) {
+void square_ring(const FaceSquare& s, const CornerSet& corners, std::vector<GridPoint>& ring) {
   // Corners counter-clockwise seen from +n: (0,0), (1,0), (1,1), (0,1) in (u, v).
   std::array<GridPoint, 4> c{s.lo, s.lo, s.lo, s.lo};
   c[1].f[s.u] += s.side;
   c[2].f[s.u] += s.side;
   c[2].f[s.v] += s.side;
   c[3].f[s.v] += s.side;
-  std::vector<GridPoint> ring;
+  ring.clear();
   for (int i = 0; i < 4; ++i) {
     ring.push_back(c[i]);
     split_edge(c[i], c[(i + 1) % 4], (i % 2 == 0) ? s.u : s.v, s.side, corners, ring);
   }
+}
+
+std::vector<GridPoint> square_ring(const FaceSquare& s, const CornerSet& corners) {
+  std::vector<GridPoint> ring;
+  ring.reserve(8);  // one allocation for the usual ring (4 corners, up to one split point a side)
+  square_ring(s, corners, ring);
   return ring;
 }
 
@@ -98,9 +109,10 @@ void triangulate_box_face(const BoxKey<3>& key, int axis, bool upper, const Corn
                           std::vector<GridTriangle>& out) {
   std::vector<FaceSquare> squares;
   face_squares(key, axis, upper, corners, squares);
+  std::vector<GridPoint> ring;
   for (const FaceSquare& sq : squares) {
     const GridPoint centre = sq.centre();
-    const std::vector<GridPoint> ring = square_ring(sq, corners);
+    square_ring(sq, corners, ring);
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const GridPoint& p = ring[i];
       const GridPoint& q = ring[(i + 1) % ring.size()];

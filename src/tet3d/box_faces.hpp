@@ -25,10 +25,10 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include "mv3d/octree_builder.hpp"
+#include "tet3d/first_use_index.hpp"
 #include "tet3d/grid_point.hpp"
 
 namespace pqmesh::tet3d {
@@ -40,17 +40,20 @@ class CornerSet {
   explicit CornerSet(const mv3d::OctreeBuilder& builder);
   // The corners of the given leaves of `tree` (all must be aligned).
   CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves);
-  bool contains(const GridPoint& p) const { return set_.count(p) != 0; }
-  std::size_t size() const { return set_.size(); }
+  bool contains(const GridPoint& p) const { return index_.find(p) >= 0; }
+  std::size_t size() const { return static_cast<std::size_t>(index_.size()); }
   // The deepest level of a leaf with corner p (the smallest box containing
   // p as a vertex, §4.3's h), or -1 if p is no corner.
   std::int32_t finest_level(const GridPoint& p) const {
-    const auto it = set_.find(p);
-    return it == set_.end() ? -1 : it->second;
+    const int id = index_.find(p);
+    return id < 0 ? -1 : levels_[static_cast<std::size_t>(id)];
   }
 
  private:
-  std::unordered_map<GridPoint, std::int32_t, GridPointHash> set_;
+  // Open addressing (first_use_index.hpp, issue 5 item 9): lookups only, the
+  // set is never iterated, so its layout cannot reach the output.
+  FirstUseIndex<GridPoint, GridPointHash> index_;
+  std::vector<std::int32_t> levels_;  // by id: the deepest level with that corner
 };
 
 using GridTriangle = std::array<GridPoint, 3>;
@@ -84,6 +87,8 @@ void face_squares(const BoxKey<3>& key, int axis, bool upper, const CornerSet& c
 // The boundary points of S (its corners and every split point on its sides),
 // counter-clockwise seen from +n, starting at S's lower corner.
 std::vector<GridPoint> square_ring(const FaceSquare& s, const CornerSet& corners);
+// The same into `ring` (cleared first): a loop over squares reuses one buffer.
+void square_ring(const FaceSquare& s, const CornerSet& corners, std::vector<GridPoint>& ring);
 
 // Appends the triangles of face (axis, upper) of the aligned box `key`,
 // each with its right-hand normal pointing out of the box. Throws
