@@ -5,6 +5,7 @@
 #include <array>
 #include <initializer_list>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -16,6 +17,7 @@
 #include "tet3d/cut_square.hpp"
 #include "tet3d/edge_point.hpp"
 #include "tet3d/facet_plane.hpp"
+#include "tet3d/tet_shape.hpp"
 #include "tet3d/point_book.hpp"
 #include "tet3d/warp.hpp"
 
@@ -143,9 +145,48 @@ class Assembler {
     const double tm = 0.5 * (t0 + t1);
     const Vec3 mid = ends.size() == 2 ? 0.5 * (book_.point(ends[0]) + book_.point(ends[1])) : a + tm * (b - a);
     const VertexKey vk{VertexKind::EdgeMidpoint, key_centre(key), {}, edge};
-    const int v = book_.id(vk, [&] { return round_onto_segment(a, b, mid); });
+    const int v = book_.id(vk, [&] { return apex_on_edge(tris, a, b, ends, mid, t0, t1); });
     for (const Tri& t : tris) cone(leaf, t, v);
     ++out_.stats.edge;
+  }
+
+  // The apex on E (our choice within §4.5.3): the midpoint of E ∩ I(b),
+  // unless a point at 1/4, 3/8, 5/8 or 3/4 of it makes the worst cone
+  // better (tet_shape): a chord of F or G on a box face whose line meets E
+  // near the midpoint makes the boundary triangle (chord, midpoint) nearly
+  // degenerate. Every candidate is rounded onto E (edge_point.hpp) and taken
+  // only if all its cones are positive (exact orient3d) and so are the
+  // midpoint's.
+  Vec3 apex_on_edge(const std::vector<Tri>& tris, Vec3 a, Vec3 b, const std::vector<int>& ends, Vec3 mid, double t0,
+                    double t1) {
+    const Vec3 p0 = ends.size() == 2 ? book_.point(ends[0]) : a + t0 * (b - a);
+    const Vec3 p1 = ends.size() == 2 ? book_.point(ends[1]) : a + t1 * (b - a);
+    auto worst = [&](Vec3 apex) {
+      double w = 0;
+      for (const Tri& t : tris) {
+        const Vec3 x = book_.point(t[0]), y = book_.point(t[2]), z = book_.point(t[1]);
+        if (orient3d(x, y, z, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
+        w = std::max(w, tet_shape(x, y, z, apex));
+      }
+      return w;
+    };
+    Vec3 best = round_onto_segment(a, b, mid);
+    double best_shape = worst(best);
+    // A midpoint with a non-positive cone is kept: the warp that caused it
+    // is found and frozen by the rebuild loop (mesh_boxes), as before.
+    if (best_shape == std::numeric_limits<double>::infinity()) return best;
+    bool moved = false;
+    for (const double t : {0.25, 0.375, 0.625, 0.75}) {
+      const Vec3 c = round_onto_segment(a, b, p0 + t * (p1 - p0));
+      const double s = worst(c);
+      if (s < best_shape) {
+        best = c;
+        best_shape = s;
+        moved = true;
+      }
+    }
+    out_.stats.edge_apex_moved += moved ? 1 : 0;
+    return best;
   }
 
   // The united box B of P vertex `vertex` (2x2x2 leaves of `leaf`'s size,

@@ -10,7 +10,10 @@
 // box's two Case B vertices where E enters and leaves it (wherever the square
 // code put them, warped_crossing.hpp; the midpoint of E ∩ the prewarped cube
 // if they are not two), rounded within an ulp of E (edge_point.hpp), coned to every π-triangle of
-// b's faces. P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in
+// b's faces. Our choice: when a point at 1/4, 3/8, 5/8 or 3/4 of E ∩ I(b)
+// gives a better worst cone (every cone positive, exact), v is that point
+// instead (a chord of F or G on a box face whose line meets E near the
+// midpoint makes the boundary triangle of that chord and v nearly flat). P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in
 // the open cube, so the cones tile it; their faces through v on F and G are
 // the boundary triangles there.
 // Vertex box (P vertex v, its united 2x2x2 box B, §4.1.3; the job names the
@@ -67,6 +70,7 @@ struct BoxJob {
 struct FacetBoxStats {
   std::int64_t empty = 0, inside = 0, on_facet = 0, beyond = 0;  // boxes per case
   std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
+  std::int64_t edge_apex_moved = 0;  // edge boxes whose apex is not E's midpoint (facet_boxes.cpp apex_on_edge)
   std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
   std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
   // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted

@@ -18,8 +18,9 @@
 //   CrossingProjection  Case D2 with the centre p of S beyond F's chord: the
 //                    segment from p to the crossing of the other facet with the
 //                    ring segment of S starting (counter-clockwise) at q, clipped at F
-//   EdgeMidpoint     midpoint of E ∩ I(b) for the edge box with centre p, edge
-//                    E (id in `facet`), §4.5.3; rounded within an ulp of E
+//   EdgeMidpoint     the apex on E of the edge box with centre p, edge E (id in
+//                    `facet`), §4.5.3: the midpoint of E ∩ I(b), or a point at
+//                    1/4 .. 3/4 of it (facet_boxes.hpp); rounded within an ulp of E
 //   PVertex          the P vertex with id `facet` (exact input coordinates):
 //                    the apex of its united vertex box, §4.5.2
 //   TwoFacetApex     the central vertex of the two-facet box with centre p
