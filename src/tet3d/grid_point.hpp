@@ -20,7 +20,11 @@ namespace pqmesh::tet3d {
 
 struct GridPoint {
   std::array<std::int64_t, 3> f{};
-  friend bool operator==(const GridPoint&, const GridPoint&) = default;
+  // Field by field: the defaulted form compiles to a memcmp call, 2% of a
+  // mesh run (hash-table probes, sorts).
+  friend bool operator==(const GridPoint& a, const GridPoint& b) {
+    return a.f[0] == b.f[0] && a.f[1] == b.f[1] && a.f[2] == b.f[2];
+  }
   friend auto operator<=>(const GridPoint&, const GridPoint&) = default;
 };
 
