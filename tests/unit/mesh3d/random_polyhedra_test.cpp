@@ -103,7 +103,12 @@ constexpr std::array<std::uint64_t, 3> kSuiteSeeds = {7, 9, 10};
 // seed 37 (a 10-gon prism with a spike and a cavity, alpha 12.7 deg): a
 // square of a united vertex box meets two P edges and three facets, which
 // the square dispatcher does not handle (InternalError, exit 70 from the
-// CLI); still failing after the edge-apex change of the afternoon.
+// CLI); still failing after the edge-apex change of the afternoon. The same
+// run found aspect * alpha far above kAspectAlphaC on bounded seeds 58 (1.1
+// million), 76, 122 and 125 (re-measured with the final code of the day:
+// 1.1e6, 1.0e5, 1.2e5, 2.8e4): those shards FAIL, a known defect of the
+// mesher (docs/ALGORITHM.md §13), not listed here because they are quality
+// failures, not throws.
 const std::map<std::pair<std::string, std::uint64_t>, std::string>& known_failures() {
   static const std::map<std::pair<std::string, std::uint64_t>, std::string> k = {
       {{"harsh", 101}, "InternalError tree_impl.hpp:46"},
