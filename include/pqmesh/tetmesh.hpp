@@ -33,10 +33,11 @@
 namespace pqmesh {
 
 // Theorem 7 as measured: max aspect ratio * alpha (radians) <= this over
-// every corpus model and random polyhedron meshed in the tests (asserted
-// there; docs/ALGORITHM.md §13). A measured ceiling, not a proved constant:
-// the thesis's C is not numeric. The summary of `pqmesh mesh` prints
-// C / alpha next to the achieved aspect ratio.
+// the corpus models and the random polyhedra of the test suite (asserted
+// there). A measured ceiling, not a proved constant (the thesis's C is not
+// numeric), and not yet a bound for every input: a few random polyhedra
+// reach 1e5-1e6 (docs/ALGORITHM.md §13). The summary of `pqmesh mesh`
+// prints C / alpha next to the achieved aspect ratio.
 inline constexpr double kMeasuredAspectAlphaC = 25000;
 
 // The user size function (thesis §1.1), as for `pqmesh octree`: the size
