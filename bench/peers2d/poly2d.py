@@ -16,18 +16,12 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from poly_numbers import number_lines  # noqa: E402
+from poly_numbers import number_lines, read_nodes  # noqa: E402
 
 
 def read_poly(path):
     lines = number_lines(path)
-    n = int(next(lines)[0])
-    vertices, first_id = [], 0
-    for i in range(n):
-        v = next(lines)
-        if i == 0:
-            first_id = int(v[0])
-        vertices.append((v[1], v[2]))
+    vertices, first_id = read_nodes(lines, 2)
     m = int(next(lines)[0])
     segments = []
     for _ in range(m):
