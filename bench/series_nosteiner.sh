@@ -2,7 +2,7 @@
 # Doubling series for pqmesh mesh --no-boundary-steiner (thesis §5.5.2: time
 # O(m log m) in the output size m). Regular n-gons, n = 125 * 2^i: the
 # pipeline's mesh size m roughly doubles with n (R's quadtree mesh dominates).
-# Prints n, m (pipeline triangles), the library's stage times from the
+# Prints n, m (the construction's triangles, before the quality pass), the library's stage times from the
 # summary (R = shrink + quad_mesh, Q-to-R, verify), total library seconds,
 # process CPU seconds, and time / (m log2 m) growth against the previous row
 # (near 1 when O(m log m)). Not a test.
@@ -22,7 +22,7 @@ for ((i = 0; i < steps; i++)); do
   /usr/bin/time -f '%U %S' -o "$work/time.txt" "$pqmesh" mesh "$work/p.poly" -o "$work/out.vtu" --no-boundary-steiner >"$work/log"
   read -r u s <"$work/time.txt"
   line=$(awk -v n="$n" -v cpu="$(awk -v u="$u" -v s="$s" 'BEGIN{print u+s}')" '
-    /^pipeline/ { m = $10 }
+    /^post-pass/ { m = $6 }  # the construction'"'"'s size (before the quality pass)
     /^time/     { gsub(",", ""); gsub(";", ""); for (i = 1; i <= NF; ++i) { if ($i == "R") r = $(i+1); if ($i == "Q-to-R") qr = $(i+1); if ($i == "verify") v = $(i+1); if ($i == "total") t = $(i+1) } }
     END { print n, m, r, qr, v, t, cpu }' "$work/log")
   read -r n m r qr v t cpu <<<"$line"

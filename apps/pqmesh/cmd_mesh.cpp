@@ -23,6 +23,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "args.hpp"
 #include "format_option.hpp"
+#include "invalid_mesh.hpp"
 #include "quality/triangle_quality_memo.hpp"
 #include "report_format.hpp"
 
@@ -144,7 +145,7 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 }  // namespace
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
-                                                 "--fixed-boundary", "--pipeline", "--thesis-fans",
+                                                 "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
                                                  "--aligned-grid"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
@@ -199,12 +200,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   start = Clock::now();
   run.check = check_mesh(run.result.mesh, domain);
   run.seconds_check = seconds_since(start);
-  if (!run.check.valid()) {
-    // quad_mesh promises a valid mesh: this is a bug, and nothing is written.
-    std::cerr << "pqmesh mesh: internal error: the mesh of " << run.input << " fails the validity check\n"
-              << run.check.to_text() << "please report this as a bug; nothing was written\n";
-    return kExitInternal;
-  }
+  if (!valid_or_reported(run.check, "the mesh of " + run.input)) return kExitInternal;
 
   if (!quiet) {  // the size estimate is for the summary only
     start = Clock::now();

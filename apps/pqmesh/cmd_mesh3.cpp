@@ -19,6 +19,7 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "format_option.hpp"
+#include "invalid_mesh.hpp"
 #include "load.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/alpha.hpp"
@@ -187,11 +188,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   start = Clock::now();
   run.check = check_mesh(run.result.mesh, domain);
   run.seconds_check = seconds_since(start);
-  if (!run.check.valid()) {
-    std::cerr << "pqmesh mesh: internal error: the mesh of " << run.input << " fails the validity check\n"
-              << run.check.to_text() << "please report this as a bug; nothing was written\n";
-    return kExitInternal;
-  }
+  if (!valid_or_reported(run.check, "the mesh of " + run.input)) return kExitInternal;
   if (!quiet) {  // the size estimate is for the summary only
     start = Clock::now();
     run.lfs = lfs_integral(domain);

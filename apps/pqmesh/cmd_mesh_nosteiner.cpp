@@ -14,6 +14,7 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "format_option.hpp"
+#include "invalid_mesh.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh_io.hpp"
@@ -25,7 +26,7 @@
 namespace pqmesh::cli {
 
 int run_mesh_no_steiner(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline", "--thesis-fans"},
+  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass"},
                   {"-o", "--output", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   const std::string input = args.positional()[0];
@@ -42,6 +43,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   }
   options.keep_better_cdt = !args.flag("--pipeline");
   options.thesis_fans = args.flag("--thesis-fans");
+  options.quality_pass = !args.flag("--no-quality-pass");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   const MeshFormat format = forced ? *forced : mesh_format_from_path(output);
   const bool quiet = args.flag("--quiet");
@@ -51,12 +53,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   const NoSteinerStats& s = result.stats;
 
   const CheckReport check = check_mesh(result.mesh, domain, CheckOptions{.no_boundary_steiner = true});
-  if (!check.valid()) {
-    std::cerr << "pqmesh mesh: internal error: the no-boundary-Steiner triangulation of " << input
-              << " fails the validity check\n"
-              << check.to_text() << "please report this as a bug; nothing was written\n";
-    return kExitInternal;
-  }
+  if (!valid_or_reported(check, "the no-boundary-Steiner triangulation of " + input)) return kExitInternal;
   WriteOptions write;
   write.format = format;
   if (format == MeshFormat::Vtu) write.cell_fields = quality_fields(result.mesh);
@@ -79,6 +76,11 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
             << (s.pipeline_path == NoSteinerPath::Full ? " (wedges + Q to R + mesh of R; no fallback)"
                                                        : " (FALLBACK)")
             << '\n'
+            << "post-pass  construction min " << fmt4_degrees(s.construction_min_angle) << " deg, "
+            << s.construction_triangles << " triangles -> " << fmt4_degrees(s.pipeline_min_angle) << " deg ("
+            << s.pass_flips << " flips, " << s.pass_removals << " removals, " << s.pass_moves << " moves, "
+            << s.pass_cavities << " cavities; quality pass " << (options.quality_pass ? "on" : "off")
+            << ", docs/ALGORITHM.md 11.12)\n"
             << "cdt        constrained Delaunay of the input (no point added): min " << fmt4_degrees(s.cdt_min_angle)
             << " deg; pipeline / cdt = "
             << (s.cdt_min_angle > 0 ? fmt4(s.pipeline_min_angle / s.cdt_min_angle) : "-") << '\n'
@@ -92,7 +94,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
             << ", R " << fmt4_degrees(s.r_min_angle) << " deg; dQ " << s.q_vertices << " vertices, dR " << s.r_vertices
             << " vertices\n"
             << "time (s)   bound " << fmt_seconds(s.seconds_bound) << ", Q " << fmt_seconds(s.seconds_q) << ", R "
-            << fmt_seconds(s.seconds_r) << ", Q-to-R " << fmt_seconds(s.seconds_between) << ", verify " << fmt_seconds(s.seconds_verify)
+            << fmt_seconds(s.seconds_r) << ", Q-to-R " << fmt_seconds(s.seconds_between) << ", pass " << fmt_seconds(s.seconds_pass) << ", verify " << fmt_seconds(s.seconds_verify)
             << ", cdt " << fmt_seconds(s.seconds_cdt) << "; total " << fmt_seconds(s.seconds_total) << '\n'
             << "check      valid (no boundary Steiner): " << check.elements << " triangles, " << check.vertices
             << " vertices, " << check.boundary_faces << " boundary edges; area " << fmt(check.mesh_volume)

@@ -22,7 +22,7 @@ const std::vector<Command>& commands() {
        run_info},
       {"mesh", "mesh a 2D or 3D domain; check and write the mesh",
        "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--refine-angle DEG]\n"
-       "                   [--protect-edges] [--aligned-grid] [--no-boundary-steiner [--pipeline] [--thesis-fans]]\n"
+       "                   [--protect-edges] [--aligned-grid] [--no-boundary-steiner [--pipeline] [--thesis-fans] [--no-quality-pass]]\n"
        "                   [--format F] [--quiet]\n"
        "\n"
        "2D: meshes a polygon with holes (Triangle .poly) with the quadtree mesher, the 2D analog of\n"
@@ -70,7 +70,9 @@ const std::vector<Command>& commands() {
        "                       has the larger min angle it is written instead (path cdt-better;\n"
        "                       --pipeline keeps the pipeline's mesh; --thesis-fans connects the\n"
        "                       matching's points by the thesis's per-square fans, Figs. 5.19-5.21,\n"
-       "                       instead of their CDT, and keeps that mesh). With it: -o, --format,\n"
+       "                       instead of their CDT, and keeps that mesh). A quality post-pass (removes\n"
+       "                       and moves Steiner points, flips edges; never lowers the min angle) runs\n"
+       "                       on the construction's mesh; --no-quality-pass skips it. With it: -o, --format,\n"
        "                       --refine-angle (the mesh of R), --quiet.\n"
        "  --quiet              print nothing on success\n"
        "\n"

@@ -324,6 +324,13 @@ struct NoSteinerOptions {
   // about half on the test inputs (docs/ALGORITHM.md §11.10). For
   // comparison with the thesis's construction.
   bool thesis_fans = false;
+  // Quality post-pass on the Full / QOnly mesh (a deviation beyond the
+  // thesis, docs/ALGORITHM.md §11.12; src/nosteiner2d/quality_pass.hpp):
+  // flips, removals and moves of Steiner points at the worst triangle while
+  // that raises its angle. Never lowers the min angle, adds no point, keeps
+  // dP exactly at the input vertices. construction_min_angle keeps the
+  // thesis construction's value (the one bounded by k g(P)).
+  bool quality_pass = true;
 };
 
 // Cdt: fallback (a stage could not be built); CdtBetter: the pipeline ran,
@@ -337,7 +344,11 @@ struct NoSteinerStats {
   double constant = kSteinerFreeBoundConstant;
   double upper_bound = 0;          // min(pi/3, constant * g): no Steiner-free triangulation does better
   double min_angle = 0;            // achieved, radians (of the output)
-  double pipeline_min_angle = 0;   // of the Full / QOnly / Cdt mesh before keep_better_cdt
+  double pipeline_min_angle = 0;   // of the Full / QOnly / Cdt mesh before keep_better_cdt (after quality_pass)
+  double construction_min_angle = 0;  // the same before quality_pass (the thesis's construction)
+  std::int64_t construction_triangles = 0;  // its size (the output size m of §5.5.2)
+  std::int64_t pass_flips = 0, pass_removals = 0, pass_moves = 0, pass_cavities = 0;  // quality_pass changes
+  bool pass_stuck = false;         // quality_pass stopped at a triangle no change improves (else: step bound)
   NoSteinerPath pipeline_path = NoSteinerPath::Full;  // its path
   std::int64_t pipeline_triangles = 0, pipeline_vertices = 0;  // its size (the output size m of §5.5.2)
   double ratio = 0;                // min_angle / g
@@ -352,7 +363,7 @@ struct NoSteinerStats {
   double wedge_min_angle = 0, between_min_angle = 0, r_min_angle = 0;
   // Wall-clock seconds per stage.
   double seconds_bound = 0, seconds_q = 0, seconds_r = 0, seconds_between = 0, seconds_verify = 0,
-         seconds_cdt = 0, seconds_total = 0;
+         seconds_cdt = 0, seconds_pass = 0, seconds_total = 0;
 };
 
 struct NoSteinerResult {

@@ -51,9 +51,9 @@ std::vector<std::uint8_t> Triangulation::inside_triangles() const {
     while (!stack.empty()) {
       const int s = stack.back();
       stack.pop_back();
+      const unsigned bits = cons_[s];  // there are pieces, so cons_ is set up
       for (int e = 0; e < 3; ++e) {
-        const int h = he(s, e);
-        if (constrained(h)) continue;
+        if ((bits >> e) & 1u) continue;  // constrained edge
         const int nb = tri_of(tris_[s].n[e]);
         if (label[nb] == kInside) continue;
         if (label[nb] == kOutside)

@@ -58,8 +58,7 @@ int Refiner::shortest_edge(int t) const {
 // the shortest edge, p = v[m+1] - v[m] is the negated vector of edge m+2 and
 // q = v[m+2] - v[m] the vector of edge m+1 (negation is exact), so the
 // values below are bit for bit those of p and q formed anew.
-bool Refiner::is_bad(int t) const {
-  if (tri_.is_ghost(t) || !tri_.inside(t)) return false;
+bool Refiner::small_angle(int t) const {
   const auto& v = tri_.tri(t).v;
   Vec2 d[3];
   double l[3];
@@ -73,6 +72,9 @@ bool Refiner::is_bad(int t) const {
   const double lp = l[prev3(m)], lq = l[next3(m)];
   return dot(p, q) > cos_target_ * std::sqrt(lp * lq);
 }
+
+// Inside triangles are never ghosts (refine_ops.cpp); the ghost test is a guard.
+bool Refiner::is_bad(int t) const { return tri_.inside(t) && !tri_.is_ghost(t) && small_angle(t); }
 
 bool Refiner::is_excused(int t) const {
   const auto& v = tri_.tri(t).v;
@@ -165,12 +167,26 @@ Walk Refiner::walk_to(int t, Vec2 c) {
 bool Refiner::collect_encroached(const Walk& w, Vec2 c) {
   encroached_.clear();
   cavity_.clear();
-  if (stamp_.size() < static_cast<std::size_t>(tri_.triangle_count()))
-    stamp_.resize(static_cast<std::size_t>(tri_.triangle_count()) + tri_.triangle_count() / 8 + 64, 0);
-  ++stamp_now_;
+  // Visited triangles: a linear search of cavity_ while it is small (the
+  // usual cavity has a handful of triangles), per-slot stamps once it grows
+  // beyond kSmallCavity. The stamp array (one int per triangle slot) is made
+  // by the first large cavity only, so most runs never allocate it.
+  constexpr std::size_t kSmallCavity = 32;
+  auto visited = [&](int t) {
+    if (cavity_.size() <= kSmallCavity) return std::find(cavity_.begin(), cavity_.end(), t) != cavity_.end();
+    return stamp_[static_cast<std::size_t>(t)] == stamp_now_;
+  };
   auto visit = [&](int t) {
-    stamp_[static_cast<std::size_t>(t)] = stamp_now_;
     cavity_.push_back(t);
+    if (cavity_.size() <= kSmallCavity) return;
+    if (cavity_.size() == kSmallCavity + 1) {  // switch to stamps: stamp the whole cavity so far
+      if (stamp_.size() < static_cast<std::size_t>(tri_.triangle_count()))
+        stamp_.resize(static_cast<std::size_t>(tri_.triangle_count()) + tri_.triangle_count() / 8 + 64, 0);
+      ++stamp_now_;
+      for (const int k : cavity_) stamp_[static_cast<std::size_t>(k)] = stamp_now_;
+      return;
+    }
+    stamp_[static_cast<std::size_t>(t)] = stamp_now_;
   };
   visit(w.t);
   if (w.end == Walk::End::Edge) visit(tri_of(tri_.tri(w.t).n[edge_of(w.h)]));
@@ -184,7 +200,7 @@ bool Refiner::collect_encroached(const Walk& w, Vec2 c) {
         continue;
       }
       const int s = tri_of(T.n[e]);
-      if (stamp_[static_cast<std::size_t>(s)] == stamp_now_ || tri_.is_ghost(s) || !tri_.inside(s)) continue;
+      if (!tri_.inside(s) || tri_.is_ghost(s) || visited(s)) continue;
       const auto& S = tri_.tri(s);
       if (incircle(pts_[S.v[0]], pts_[S.v[1]], pts_[S.v[2]], c) == Sign::Positive) visit(s);
     }
@@ -306,13 +322,14 @@ void Refiner::run(RefineResult& out) {
   // then every bad inside triangle in slot order.
   const int nt = tri_.triangle_count();
   for (int t = 0; t < nt; ++t) {
-    if (tri_.is_ghost(t) || !tri_.inside(t)) continue;
+    if (!tri_.inside(t) || tri_.is_ghost(t)) continue;
     const auto& T = tri_.tri(t);
-    for (int e = 0; e < 3; ++e)
-      if (tri_.constrained(he(t, e)) && encroaches(T.v[e], T.v[next3(e)], T.v[prev3(e)]) &&
-          splittable(T.v[next3(e)], T.v[prev3(e)]))
-        segq_.push_back({T.v[next3(e)], T.v[prev3(e)]});
-    if (is_bad(t)) push_tri(t);
+    if (tri_.any_constrained(t))
+      for (int e = 0; e < 3; ++e)
+        if (tri_.constrained(he(t, e)) && encroaches(T.v[e], T.v[next3(e)], T.v[prev3(e)]) &&
+            splittable(T.v[next3(e)], T.v[prev3(e)]))
+          segq_.push_back({T.v[next3(e)], T.v[prev3(e)]});
+    if (small_angle(t)) push_tri(t);
   }
   bool capped = false;
   for (;;) {
@@ -360,8 +377,19 @@ void Refiner::run(RefineResult& out) {
   out.inserted = inserted_;
   out.inserted_on_constraints = on_constraints_;
   out.refused_splits = refused_;
+  // The triangles bad at the end are among the queued slots: the initial scan
+  // queued every bad inside triangle, and a triangle changes (vertices or
+  // label) only by an insertion at a point p that it then has as a vertex
+  // (refine_ops.cpp: the splits and their Lawson flips make triangles around
+  // p only), after which after_insertion(p) queued it if bad. So the final
+  // check visits the queued slots, each once, instead of every triangle.
+  std::vector<int> slots;
+  slots.reserve(bad_.size());
+  for (const QueuedTri& q : bad_) slots.push_back(q.t);
+  std::sort(slots.begin(), slots.end());
+  slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
   bool reached = true;
-  for (int t = 0; t < tri_.triangle_count(); ++t) {
+  for (const int t : slots) {
     if (!is_bad(t)) continue;
     if (is_excused(t))
       ++out.excused;

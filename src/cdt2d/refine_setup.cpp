@@ -103,19 +103,12 @@ void Refiner::build_sharp_vertices() {
   std::sort(sharp_pairs_.begin(), sharp_pairs_.end());
 }
 
-// Triangles: inside ones in slot order. Constraints: per input constraint,
-// per initial piece u -> v, the chain of constrained edges from u to v through
-// Steiner points of the piece's canonical origin (at an input vertex in the
-// middle of a constraint, the neighbour that lies towards v: dot_sign < 0).
-void Refiner::output(RefineResult& out) const {
-  std::size_t inside = 0;  // counted first: one allocation, no copies while growing
-  for (int t = 0; t < tri_.triangle_count(); ++t) inside += !tri_.is_ghost(t) && tri_.inside(t);
-  out.triangles.reserve(inside);
-  for (int t = 0; t < tri_.triangle_count(); ++t) {
-    if (tri_.is_ghost(t) || !tri_.inside(t)) continue;
-    const auto& v = tri_.tri(t).v;
-    out.triangles.push_back({v[0], v[1], v[2]});
-  }
+// The result; the last use of the refiner. Constraints: per input
+// constraint, per initial piece u -> v, the chain of constrained edges from u
+// to v through Steiner points of the piece's canonical origin (at an input
+// vertex in the middle of a constraint, the neighbour that lies towards v:
+// dot_sign < 0). Then the triangles.
+void Refiner::output(RefineResult& out) {
   const auto& pieces = tri_.pieces();
   for (std::size_t i = 0; i + 1 < piece_begin_.size(); ++i) {
     for (std::size_t k = piece_begin_[i]; k < piece_begin_[i + 1]; ++k) {
@@ -152,7 +145,22 @@ void Refiner::output(RefineResult& out) const {
       }
     }
   }
+  // Triangles: inside ones in slot order. The constraint bits, vertex map
+  // and per-vertex tables are not needed any more: released first, so the
+  // output array does not add to the peak memory on top of them.
+  seg_of_ = {};
+  vgroup_ = {};
+  tri_.release_refinement_maps();
+  // Inside triangles are never ghosts (refine_ops.cpp): the label decides,
+  // the ghost test is a guard.
+  std::size_t inside = 0;  // counted first: one allocation, no copies while growing
+  for (int t = 0; t < tri_.triangle_count(); ++t) inside += tri_.inside(t);
+  out.triangles.reserve(inside);
+  for (int t = 0; t < tri_.triangle_count(); ++t) {
+    if (!tri_.inside(t) || tri_.is_ghost(t)) continue;
+    const auto& v = tri_.tri(t).v;
+    out.triangles.push_back({v[0], v[1], v[2]});
+  }
 }
-
 
 }  // namespace pqmesh::cdt2d::detail

@@ -69,7 +69,8 @@ class Refiner {
   }
   void build_sharp_vertices();
   int origin_of(int u, int v) const;
-  bool is_bad(int t) const;
+  bool is_bad(int t) const;       // inside, real, and small_angle
+  bool small_angle(int t) const;  // smallest angle below the target (any real triangle)
   bool is_excused(int t) const;
   int shortest_edge(int t) const;
   Vec2 new_point_for(int t) const;
@@ -90,7 +91,7 @@ class Refiner {
   bool encroaches(int x, int u, int v) const {
     return x != kGhost && dot_sign(pts_[x], pts_[u], pts_[v]) != Sign::Positive;
   }
-  void output(RefineResult& out) const;
+  void output(RefineResult& out);  // last: releases the refiner's and the triangulation's maps
 
   const CdtInput& in_;
   const SegmentSupport& sup_;
@@ -111,7 +112,7 @@ class Refiner {
   std::size_t bad_head_ = 0;
   std::vector<std::array<int, 2>> segq_;
   std::size_t seg_head_ = 0;
-  std::vector<int> stamp_;
+  std::vector<int> stamp_;  // per triangle slot: the large cavity that last visited it (collect_encroached)
   int stamp_now_ = 0;
   std::vector<int> cavity_;
   std::vector<std::array<int, 2>> encroached_;

@@ -105,9 +105,12 @@ bool Triangulation::build_delaunay() {
   constexpr long kStride = 8;
   long top = 1;
   while (top * kStride * 64 <= n) top *= kStride;
-  for (long stride = top; stride >= 1; stride /= kStride)
-    for (long k = 0; k < n; k += stride)
-      if ((stride == top || k % (stride * kStride) != 0) && k >= 2 && k != third) insert_point(id(k));
+  for (long stride = top; stride >= 1; stride /= kStride) {
+    // m counts k / stride modulo kStride (no division per position).
+    long m = 0;
+    for (long k = 0; k < n; k += stride, m = m + 1 == kStride ? 0 : m + 1)
+      if ((stride == top || m != 0) && k >= 2 && k != third) insert_point(id(k));
+  }
   return true;
 }
 
@@ -124,31 +127,28 @@ Triangulation::Location Triangulation::locate(int p) {
   int t = last_;
   int from = -1;
   for (;;) {
-    const Tri& T = tris_[t];
+    const Tri& T = tris_[t];  // real: a ghost ends the walk below
     const int start = random3();
-    Sign s[3] = {Sign::Positive, Sign::Positive, Sign::Positive};
-    int exit_edge = -1;
+    const Vec2 corner[3] = {pts_[T.v[0]], pts_[T.v[1]], pts_[T.v[2]]};
+    int exit_edge = -1, zeros = 0, zero_edge = -1, zero_sum = 0;
     for (int k = 0; k < 3; ++k) {
       const int e = start + k < 3 ? start + k : start + k - 3;
       if (e == from) continue;
-      s[e] = orient2d(pts_[T.v[next3(e)]], pts_[T.v[prev3(e)]], q);
-      if (s[e] == Sign::Negative) {
+      const Sign s = orient2d(corner[next3(e)], corner[prev3(e)], q);
+      if (s == Sign::Negative) {
         exit_edge = e;
         break;
       }
+      if (s == Sign::Zero) {
+        ++zeros;
+        zero_edge = e;
+        zero_sum += e;
+      }
     }
     if (exit_edge < 0) {
-      int zeros = 0, zero_edge = -1;
-      for (int e = 0; e < 3; ++e)
-        if (s[e] == Sign::Zero) {
-          ++zeros;
-          zero_edge = e;
-        }
-      if (zeros >= 2) {
-        // p coincides with the vertex shared by the two zero edges.
-        for (int e = 0; e < 3; ++e)
-          if (s[e] != Sign::Zero) throw_duplicate(p, T.v[e]);
-      }
+      // Two zero edges (three cannot be: t is strictly counter-clockwise):
+      // p coincides with their shared vertex, opposite the third edge.
+      if (zeros >= 2) throw_duplicate(p, T.v[3 - zero_sum]);
       return {t, zero_edge};
     }
     const int h = T.n[exit_edge];
@@ -177,15 +177,15 @@ void Triangulation::split_triangle(int t, int p) {
   const int t0 = t;
   const int t1 = static_cast<int>(tris_.size());
   const int t2 = t1 + 1;
-  tris_[t0].v[0] = p;  // (p, b, c)
-  tris_.push_back({{p, c, a}, {-1, -1, -1}});
-  tris_.push_back({{p, a, b}, {-1, -1, -1}});
-  link(he(t0, 0), T.n[0]);
-  link(he(t1, 0), T.n[1]);
-  link(he(t2, 0), T.n[2]);
-  link(he(t0, 1), he(t1, 2));
-  link(he(t1, 1), he(t2, 2));
-  link(he(t2, 1), he(t0, 2));
+  // The fan (p, b, c), (p, c, a), (p, a, b) written whole: edge 0 of the i-th
+  // is the old edge i (its outer twin is re-pointed below), edges 1 and 2 are
+  // the spokes p-a, p-b, p-c shared inside the fan.
+  tris_[t0] = {{p, b, c}, {T.n[0], he(t1, 2), he(t2, 1)}};
+  tris_.push_back({{p, c, a}, {T.n[1], he(t2, 2), he(t0, 1)}});
+  tris_.push_back({{p, a, b}, {T.n[2], he(t0, 2), he(t1, 1)}});
+  set_twin(T.n[0], he(t0, 0));
+  set_twin(T.n[1], he(t1, 0));
+  set_twin(T.n[2], he(t2, 0));
   stack_.push_back(t0);
   stack_.push_back(t1);
   stack_.push_back(t2);
@@ -205,18 +205,17 @@ void Triangulation::split_edge(int h, int p) {
   const int n_bc = T.n[next3(i)], n_ca = T.n[prev3(i)], n_ad = U.n[next3(j)], n_db = U.n[prev3(j)];
   const int t0 = t, t1 = u;
   const int t2 = static_cast<int>(tris_.size()), t3 = t2 + 1;
-  tris_[t0] = {{p, b, c}, {-1, -1, -1}};
-  tris_[t1] = {{p, c, a}, {-1, -1, -1}};
-  tris_.push_back({{p, a, d}, {-1, -1, -1}});
-  tris_.push_back({{p, d, b}, {-1, -1, -1}});
-  link(he(t0, 0), n_bc);
-  link(he(t1, 0), n_ca);
-  link(he(t2, 0), n_ad);
-  link(he(t3, 0), n_db);
-  link(he(t0, 1), he(t1, 2));
-  link(he(t1, 1), he(t2, 2));
-  link(he(t2, 1), he(t3, 2));
-  link(he(t3, 1), he(t0, 2));
+  // The fan written whole (edge 0: an outer edge, re-pointed below; edges 1
+  // and 2: the spokes shared around p). The outer twins lie in triangles
+  // other than t and u (c == d would need a sphere of two triangles).
+  tris_[t0] = {{p, b, c}, {n_bc, he(t1, 2), he(t3, 1)}};
+  tris_[t1] = {{p, c, a}, {n_ca, he(t2, 2), he(t0, 1)}};
+  tris_.push_back({{p, a, d}, {n_ad, he(t3, 2), he(t1, 1)}});
+  tris_.push_back({{p, d, b}, {n_db, he(t0, 2), he(t2, 1)}});
+  set_twin(n_bc, he(t0, 0));
+  set_twin(n_ca, he(t1, 0));
+  set_twin(n_ad, he(t2, 0));
+  set_twin(n_db, he(t3, 0));
   stack_.push_back(t0);
   stack_.push_back(t1);
   stack_.push_back(t2);
@@ -255,6 +254,25 @@ void Triangulation::flip(int h) {
   }
 }
 
+// flip(he(t, 0)) for phase 1 (no constraint bits), with the edge index
+// known: t = (p, a, b), its neighbour across a -> b is u = (d, b, a) (d at
+// index j). Afterwards t = (p, a, d), u = (p, d, b), every half-edge twinned
+// as flip() leaves it (the four outer neighbours lie in triangles other than
+// t and u: d == p would need a sphere of two triangles).
+void Triangulation::flip_at_apex(int t) {
+  const Tri T = tris_[t];
+  const int k = T.n[0], u = tri_of(k), j = edge_of(k);
+  const Tri& U = tris_[u];
+  const int p = T.v[0], a = T.v[1], b = T.v[2], d = U.v[j];
+  const int n_bp = T.n[1], n_pa = T.n[2], n_ad = U.n[next3(j)], n_db = U.n[prev3(j)];
+  tris_[t] = {{p, a, d}, {n_ad, he(u, 2), n_pa}};
+  tris_[u] = {{p, d, b}, {n_db, n_bp, he(t, 1)}};
+  set_twin(n_ad, he(t, 0));
+  set_twin(n_pa, he(t, 2));
+  set_twin(n_db, he(u, 0));
+  set_twin(n_bp, he(u, 1));
+}
+
 // Lawson flips after inserting p. Every triangle on stack_ has p at index 0
 // and its edge 0 opposite p; a flip keeps p at index 0 in both triangles, so
 // stack entries stay valid. Flip rule (strict, so ties never flip):
@@ -286,7 +304,7 @@ void Triangulation::legalize(int p) {
     }
     if (!do_flip) continue;
     const int u = tri_of(h);
-    flip(he(t, 0));
+    flip_at_apex(t);
     stack_.push_back(t);
     stack_.push_back(u);
     if (!is_ghost(t)) last_ = t;

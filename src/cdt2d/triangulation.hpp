@@ -83,6 +83,13 @@ class Triangulation {
   int index_of(int t, int v) const { return index_in(t, v); }
   int half_edge(int u, int v) const { return find_half_edge(u, v); }
   const std::vector<std::array<int, 2>>& pieces() const { return pieces_; }
+  // Frees the constraint bits and the vertex -> triangle map (their memory)
+  // once only the triangles and their inside labels are still read: after
+  // it, constrained() is false everywhere and no operation may be called.
+  void release_refinement_maps() {
+    cons_ = {};
+    vtri_ = {};
+  }
   // Point p strictly inside the inside triangle t (edge < 0), or in the
   // relative interior of the non-constrained edge `edge` of t (both sides
   // inside, as a walk that never crosses a constraint finds it): 1-3 or 2-4
@@ -100,6 +107,7 @@ class Triangulation {
   const Tri& tri(int t) const { return tris_[t]; }
   bool is_ghost(int t) const { return tris_[t].v[0] < 0 || tris_[t].v[1] < 0 || tris_[t].v[2] < 0; }
   bool constrained(int h) const { return !cons_.empty() && ((cons_[tri_of(h)] >> (edge_of(h))) & 1u) != 0; }
+  bool any_constrained(int t) const { return !cons_.empty() && cons_[t] != 0; }
 
  private:
   struct Location {
@@ -117,11 +125,13 @@ class Triangulation {
   int random3();
 
   // shared helpers
+  void set_twin(int h, int k) { tris_[tri_of(h)].n[edge_of(h)] = k; }  // one direction of link()
   void link(int h, int k) {
-    tris_[tri_of(h)].n[edge_of(h)] = k;
-    tris_[tri_of(k)].n[edge_of(k)] = h;
+    set_twin(h, k);
+    set_twin(k, h);
   }
-  void flip(int h);  // see triangulation.cpp
+  void flip(int h);          // see triangulation.cpp
+  void flip_at_apex(int t);  // flip(he(t, 0)) in phase 1
 
   // constraints.cpp
   void begin_constraints();

@@ -46,6 +46,7 @@
 
 #include "mesh/check2d_stages.hpp"
 #include "mesh/check_common.hpp"
+#include "geometry/large_page_allocator.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 
@@ -112,7 +113,7 @@ bool has_coincident_vertices(const std::vector<Vec2>& pts) {
   std::size_t size = 16;
   while (size < 2 * pts.size()) size *= 2;
   const std::size_t mask = size - 1;
-  std::vector<int> table(size, -1);
+  std::vector<int, LargePageAllocator<int>> table(size, -1);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const Vec2 p = pts[i];
     for (std::size_t s = coordinate_hash(p) & mask;; s = (s + 1) & mask) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mesh/check2d_stages.hpp"
+#include "geometry/large_page_allocator.hpp"
 
 namespace pqmesh::detail::check2d {
 
@@ -89,7 +90,7 @@ bool Checker2::stage3_edges() {
   for (const auto& q : m_.triangles)
     for (int k = 0; k < 3; ++k) ++start[std::min(q[k], q[(k + 1) % 3]) + 1];
   for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<Rec> recs(start[nv]);
+  std::vector<Rec, LargePageAllocator<Rec>> recs(start[nv]);
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (int t = 0; t < nt; ++t) {

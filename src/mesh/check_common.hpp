@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/large_page_allocator.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/vec.hpp"
 
@@ -32,7 +33,7 @@ class IssueSink {
 // Compressed adjacency lists: the neighbours of v are items[offset[v] .. offset[v+1]).
 struct Adjacency {
   std::vector<int> offset;
-  std::vector<int> items;
+  std::vector<int, LargePageAllocator<int>> items;  // two per edge: a big table filled all over
   std::span<const int> of(int v) const {
     return {items.data() + offset[v], items.data() + offset[v + 1]};
   }

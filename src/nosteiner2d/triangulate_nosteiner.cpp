@@ -15,6 +15,7 @@
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "nosteiner2d/match_qr.hpp"
+#include "nosteiner2d/quality_pass.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/nosteiner.hpp"
@@ -193,6 +194,30 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
     }
   }
   if (st.path == NoSteinerPath::Cdt) mesh = p_cdt(domain);
+  st.construction_min_angle = min_triangle_angle(mesh);
+  st.construction_triangles = std::int64_t(mesh.triangles.size());
+  if (options.quality_pass && st.path != NoSteinerPath::Cdt) {
+    t = Clock::now();
+    TriMesh2 before = mesh;
+    const detail::QualityPassStats pass =
+        detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
+    st.pass_flips = pass.flips;
+    st.pass_removals = pass.removals;
+    st.pass_moves = pass.moves;
+    st.pass_cavities = pass.cavities;
+    st.pass_removals += pass.coarsened;
+    st.pass_stuck = pass.stopped_stuck;
+    st.seconds_pass = since(t);
+    if (options.verify) {  // valid by construction (quality_pass.hpp); checked like every stage
+      t = Clock::now();
+      std::string why;
+      if (!passes(mesh, domain, why)) {
+        mesh = std::move(before);
+        reason += (reason.empty() ? "" : "; ") + std::string("quality pass output failed the check: ") + why;
+      }
+      st.seconds_verify += since(t);
+    }
+  }
   st.fallback_reason = st.path == NoSteinerPath::Full ? std::string() : reason;
   st.pipeline_path = st.path;
   st.pipeline_min_angle = min_triangle_angle(mesh);

@@ -12,21 +12,6 @@
 namespace pqmesh {
 namespace {
 
-using detail::kTinyPermanent;
-constexpr double kEps = detail::kPredicateEps;
-
-// The error-bound constants are deliberately generous (a few times the bounds
-// that a careful rounding analysis gives for these expression trees): a too
-// large bound only sends more cases to the exact path, never a wrong sign.
-// Returns the certain sign, or nullopt when the exact path must decide.
-std::optional<Sign> filter(double det, double permanent, double factor) {
-  if (permanent == 0) return Sign::Zero;  // every term is exactly zero
-  if (permanent <= kTinyPermanent) return std::nullopt;
-  const double bound = factor * kEps * permanent;
-  if (det > bound) return Sign::Positive;
-  if (-det > bound) return Sign::Negative;
-  return std::nullopt;
-}
 
 Sign sign_of_mpq(const mpq_class& v) { return static_cast<Sign>(sgn(v)); }
 
@@ -254,7 +239,7 @@ Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double permanent = std::abs(bx) * (std::abs(cy * dz) + std::abs(cz * dy)) +
                            std::abs(by) * (std::abs(cx * dz) + std::abs(cz * dx)) +
                            std::abs(bz) * (std::abs(cx * dy) + std::abs(cy * dx));
-  if (const auto s = filter(det, permanent, 16)) return *s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 16, s)) return s;
   if (Sign s = Sign::Zero; detail::orient3d_expansion(a, b, c, d, s)) return s;
   const mpq_class m[3][3] = {{q(b.x) - q(a.x), q(b.y) - q(a.y), q(b.z) - q(a.z)},
                              {q(c.x) - q(a.x), q(c.y) - q(a.y), q(c.z) - q(a.z)},
@@ -357,7 +342,7 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
     det += s * lift[i] * minor3(i, false);
     permanent += lift[i] * minor3(i, true);
   }
-  if (const auto s = filter(det, permanent, 64)) return -*s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 64, s)) return -s;
   mpq_class pe[4][3], lq[4];
   const Vec3 src[4] = {a, b, c, d};
   for (int i = 0; i < 4; ++i) {

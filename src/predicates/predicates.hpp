@@ -35,6 +35,37 @@ constexpr double kPredicateEps = std::numeric_limits<double>::epsilon();  // 2^-
 // Below this permanent the error analysis could be spoiled by underflow, so
 // the double filter never decides (the later stages do).
 constexpr double kTinyPermanent = 1e-280;
+// The double filter of every predicate. det is the determinant evaluated in
+// double, permanent the same expression with every term replaced by its
+// absolute value, and factor * eps * permanent bounds the rounding error of
+// det (each predicate states its factor). Returns true with the sign when det
+// clears the bound, or with Zero when the permanent is exactly 0 (then every
+// term, and so the determinant, is exactly 0); false (sign untouched) when a
+// later, exact stage must decide: det within the bound, a permanent so small
+// that underflow could spoil the bound, or a NaN. The factors are
+// deliberately generous (a few times what a careful rounding analysis gives
+// for each expression tree): a too large bound only sends more cases to the
+// exact stages, never a wrong sign. (An out-parameter, not std::optional: the
+// inline callers then compile to plain branches.)
+constexpr bool filtered_sign(double det, double permanent, double factor, Sign& sign) {
+  if (permanent > kTinyPermanent) {
+    const double bound = factor * kPredicateEps * permanent;
+    if (det > bound) {
+      sign = Sign::Positive;
+      return true;
+    }
+    if (-det > bound) {
+      sign = Sign::Negative;
+      return true;
+    }
+    return false;
+  }
+  if (permanent == 0) {
+    sign = Sign::Zero;
+    return true;
+  }
+  return false;
+}
 // The stages after the double filter (predicates.cpp): the error-free
 // "certified" evaluation, then (orient2d) an exact expansion sum, then GMP.
 // Called only when the inline filter below cannot decide.
@@ -85,13 +116,7 @@ inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double l = acx * bcy, r = acy * bcx;
   const double det = l - r;
   const double permanent = std::abs(l) + std::abs(r);
-  if (permanent > detail::kTinyPermanent) {
-    const double bound = 8 * detail::kPredicateEps * permanent;
-    if (det > bound) return Sign::Positive;
-    if (-det > bound) return Sign::Negative;
-  } else if (permanent == 0) {
-    return Sign::Zero;
-  }
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
   return detail::orient2d_after_filter(a, b, c);
 }
 
@@ -116,13 +141,7 @@ inline Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double permanent = alift * (std::abs(bdx * cdy) + std::abs(bdy * cdx)) +
                            blift * (std::abs(cdx * ady) + std::abs(cdy * adx)) +
                            clift * (std::abs(adx * bdy) + std::abs(ady * bdx));
-  if (permanent > detail::kTinyPermanent) {
-    const double bound = 32 * detail::kPredicateEps * permanent;
-    if (det > bound) return Sign::Positive;
-    if (-det > bound) return Sign::Negative;
-  } else if (permanent == 0) {
-    return Sign::Zero;
-  }
+  if (Sign s{}; detail::filtered_sign(det, permanent, 32, s)) return s;
   return detail::incircle_after_filter(a, b, c, d);
 }
 
@@ -138,13 +157,7 @@ inline Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
   const double l = ux * vx, r = uy * vy;
   const double det = l + r, permanent = std::abs(l) + std::abs(r);
-  if (permanent > detail::kTinyPermanent) {
-    const double bound = 8 * detail::kPredicateEps * permanent;
-    if (det > bound) return Sign::Positive;
-    if (-det > bound) return Sign::Negative;
-  } else if (permanent == 0) {
-    return Sign::Zero;
-  }
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
   return detail::dot_sign_after_filter(a, b, c);
 }
 
@@ -156,13 +169,7 @@ inline Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double vx = d.x - c.x, vy = d.y - c.y, vz = d.z - c.z;
   const double px = ux * vx, py = uy * vy, pz = uz * vz;
   const double det = px + py + pz, permanent = std::abs(px) + std::abs(py) + std::abs(pz);
-  if (permanent > detail::kTinyPermanent) {
-    const double bound = 8 * detail::kPredicateEps * permanent;
-    if (det > bound) return Sign::Positive;
-    if (-det > bound) return Sign::Negative;
-  } else if (permanent == 0) {
-    return Sign::Zero;
-  }
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
   return detail::dot_sign_after_filter(a, b, c, d);
 }
 // Sign of (b - a) . (c - a), as in 2D.

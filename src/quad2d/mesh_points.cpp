@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <limits>
 #include <string>
@@ -283,16 +284,16 @@ class PointGenerator {
   // 127, so 4 means exactly 4) and busy is the or of their busy flags, the
   // same facts the sorted runs of corner_phase give. The grid is allocated
   // zeroed but untouched (calloc: fresh pages), so only the rows that hold
-  // corners cost memory. Scanning the used rows in order gives the distinct
-  // corners by (x, y), and a counting sort on y within that scan gives them by
-  // (y, x); the corners are then placed in (x, y) order, as corner_phase does.
+  // corners cost memory. The distinct corners are the non-zero bytes: the grid
+  // itself answers find_crossings' questions (grid_corners_around), and scanning
+  // the used rows in order places the corners in (x, y) order, as corner_phase
+  // does.
   static constexpr int kMaxDirectBits = 26;
   void direct_corner_phase() {
     const int yb = grid_.ybits;
     const std::size_t rows = std::size_t{1} << grid_.xbits, cols = std::size_t{1} << yb;
     const ZeroedBytes cells(rows * cols);
     std::vector<std::uint8_t> row_used(rows, 0);
-    std::vector<std::size_t> per_y(cols + 1, 0);  // distinct corners per iy, then the start of each iy in by_y_
     std::size_t distinct = 0;
     for (const std::int32_t n : leaves_) {
       const NodeData& nd = b_.data(n);
@@ -304,35 +305,30 @@ class PointGenerator {
         std::uint8_t& c = cells[(ci << yb) | cj];
         if (c == 0) {
           ++distinct;
-          ++per_y[cj + 1];
           row_used[ci] = 1;
         }
         c = static_cast<std::uint8_t>((c >> 1 < 127 ? c + 2 : c) | busy);
       }
     }
-    for (std::size_t y = 0; y < cols; ++y) per_y[y + 1] += per_y[y];
-    by_x_.reserve(distinct);
-    by_y_.resize(distinct);
-    for (std::size_t i = 0; i < rows; ++i) {
-      if (!row_used[i]) continue;
-      const std::uint8_t* row = &cells[i << yb];
-      for (std::size_t j = 0; j < cols; ++j) {
-        if (row[j] == 0) continue;
-        const Vec2 p = grid_.point(i, j);
-        by_x_.push_back(p);
-        by_y_[per_y[j]++] = p;
-      }
-    }
+    cells_ = &cells[0];
     find_crossings();
+    cells_ = nullptr;
     memo_ = CrossingMemo{};
-    release(by_x_);
-    release(by_y_);
     plain_.reserve(distinct);
     std::vector<int> segs;
     for (std::size_t i = 0; i < rows; ++i) {
       if (!row_used[i]) continue;
       const std::uint8_t* row = &cells[i << yb];
       for (std::size_t j = 0; j < cols; ++j) {
+        // Most of a row is empty: skip eight empty bytes at once.
+        if (j % 8 == 0 && j + 8 <= cols) {
+          std::uint64_t word;
+          std::memcpy(&word, row + j, 8);
+          if (word == 0) {
+            j += 7;
+            continue;
+          }
+        }
         const std::uint8_t c = row[j];
         if (c == 0) continue;
         // Fast path of place_corners: a corner of four leaves, none busy.
@@ -343,6 +339,57 @@ class PointGenerator {
       }
     }
     std::sort(snaps_.begin(), snaps_.end());
+  }
+
+  // The grid of direct_corner_phase: whether grid point (i, j) is a leaf corner.
+  bool is_corner(std::uint64_t i, std::uint64_t j) const { return cells_[(i << grid_.ybits) | j] != 0; }
+
+  // The leaf corners on the box-side line {x = at} (vertical) or {y = at}
+  // nearest to p on either side: c1 the last one with across(c1) <= across(p),
+  // c2 the first one with across(c2) > across(p), read off the grid (exact
+  // comparisons with exact grid coordinates; the rounded index is only a
+  // start). Exactly what sorted_corners_around gives.
+  bool grid_corners_around(bool vertical, double at, Vec2 p, Vec2& c1, Vec2& c2) const {
+    const std::uint64_t fixed = vertical ? grid_.ix(at) : grid_.iy(at);
+    const std::int64_t n = std::int64_t{1} << (vertical ? grid_.ybits : grid_.xbits);
+    const double v = vertical ? p.y : p.x, origin = vertical ? grid_.y0 : grid_.x0;
+    const auto coord = [&](std::int64_t k) { return origin + static_cast<double>(k) * grid_.unit; };
+    const auto corner = [&](std::int64_t k) {
+      const auto u = static_cast<std::uint64_t>(k);
+      return vertical ? is_corner(fixed, u) : is_corner(u, fixed);
+    };
+    // k: the last grid line with coord(k) <= v (-1: none).
+    const double guess = std::floor((v - origin) * grid_.inv_unit);
+    std::int64_t k = guess < 0 ? -1 : guess >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::int64_t>(guess);
+    while (k >= 0 && coord(k) > v) --k;
+    while (k + 1 < n && coord(k + 1) <= v) ++k;
+    std::int64_t lo = k, hi = k + 1;
+    while (lo >= 0 && !corner(lo)) --lo;
+    if (lo < 0) return false;
+    while (hi < n && !corner(hi)) ++hi;
+    if (hi >= n) return false;
+    const auto point = [&](std::int64_t m) {
+      const auto u = static_cast<std::uint64_t>(m);
+      return vertical ? grid_.point(fixed, u) : grid_.point(u, fixed);
+    };
+    c1 = point(lo);
+    c2 = point(hi);
+    return true;
+  }
+
+  // The same from the distinct corners sorted by (x, y) (by_x_) and by (y, x)
+  // (by_y_), which corner_phase makes.
+  bool sorted_corners_around(bool vertical, double at, Vec2 p, Vec2& c1, Vec2& c2) const {
+    const std::vector<Vec2>& line = vertical ? by_x_ : by_y_;
+    const auto key_less = [vertical](Vec2 u, Vec2 w) {
+      return vertical ? std::tie(u.x, u.y) < std::tie(w.x, w.y) : std::tie(u.y, u.x) < std::tie(w.y, w.x);
+    };
+    const auto along = [vertical](Vec2 q) { return vertical ? q.x : q.y; };
+    auto it = std::upper_bound(line.begin(), line.end(), p, key_less);
+    if (it == line.begin() || it == line.end()) return false;
+    c2 = *it;
+    c1 = *(it - 1);
+    return along(c1) == at && along(c2) == at;  // else rounding carried p off the side's range
   }
 
   // Every leaf corner (once per leaf) sorted by (x, y); the distinct corners
@@ -521,15 +568,10 @@ class PointGenerator {
     }
     if (owner >= 0 && too_close(p, owner)) return;
     // The corners on this line around p.
-    const std::vector<Vec2>& line = vertical ? by_x_ : by_y_;
-    const auto key_less = [vertical](Vec2 u, Vec2 w) {
-      return vertical ? std::tie(u.x, u.y) < std::tie(w.x, w.y) : std::tie(u.y, u.x) < std::tie(w.y, w.x);
-    };
-    auto it = std::upper_bound(line.begin(), line.end(), p, key_less);
-    if (it == line.begin() || it == line.end()) return;
-    const Vec2 c2 = *it, c1 = *(it - 1);
-    if (along(c1) != at || along(c2) != at) return;  // rounding carried p off the side's range
-    if (across(c1) == across(p)) return;            // p is a corner: the corner was warped
+    Vec2 c1, c2;
+    if (!(cells_ != nullptr ? grid_corners_around(vertical, at, p, c1, c2) : sorted_corners_around(vertical, at, p, c1, c2)))
+      return;
+    if (across(c1) == across(p)) return;  // p is a corner: the corner was warped
     crossings_.push_back({p, s, c1, c2, owner, vertical, across(c2) - across(c1)});
   }
 
@@ -651,7 +693,8 @@ class PointGenerator {
   QuadMeshStats& stats_;
   std::vector<std::int32_t> leaves_;
   CornerGrid grid_;
-  std::vector<Vec2> by_x_, by_y_;  // distinct corners sorted by (x, y) and by (y, x)
+  std::vector<Vec2> by_x_, by_y_;  // corner_phase: distinct corners sorted by (x, y) and by (y, x)
+  const std::uint8_t* cells_ = nullptr;  // direct_corner_phase's grid while find_crossings runs
   std::vector<Snap> snaps_;
   std::vector<Snap> forced_;        // (corner, segment): a crossing forces the corner onto the segment
   std::vector<Crossing> crossings_;

@@ -2,10 +2,11 @@
 // Stable least-significant-digit radix sort on an unsigned integer key of at
 // most `bits` bits (the mesher's large sorts: leaf corners, z-order). Linear
 // in the input, ceil(bits / 12) passes of equal digit width (at most 12 bits,
-// so the counters stay in cache); a pass whose digit is the same for every
-// element is skipped. Stable, so equal keys keep their input order: sorting
-// by a key and then by a second key orders by (second, first), and the
-// result never depends on anything but the input sequence (deterministic).
+// so the counters stay in cache), all counted in one read of the input; a
+// pass whose digit is the same for every element is skipped. Stable, so
+// equal keys keep their input order: sorting by a key and then by a second
+// key orders by (second, first), and the result never depends on anything
+// but the input sequence (deterministic).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -23,18 +24,25 @@ void radix_sort(std::vector<T>& v, int bits, KeyFn key, std::vector<T>& scratch)
   const int kDigit = (bits + passes - 1) / passes;
   const std::size_t kBuckets = std::size_t{1} << kDigit;
   scratch.resize(v.size());
-  std::vector<std::size_t> start(kBuckets);
-  for (int shift = 0; shift < bits; shift += kDigit) {
-    std::fill(start.begin(), start.end(), 0);
-    for (const T& x : v) ++start[static_cast<std::size_t>((key(x) >> shift) & (kBuckets - 1))];
+  // Every pass's digit counts from one read of the input (a pass does not
+  // change the multiset of keys, so its counts are known in advance).
+  std::vector<std::size_t> counts(static_cast<std::size_t>(passes) * kBuckets, 0);
+  for (const T& x : v) {
+    const std::uint64_t k = key(x);
+    for (int p = 0; p < passes; ++p)
+      ++counts[static_cast<std::size_t>(p) * kBuckets + static_cast<std::size_t>((k >> (p * kDigit)) & (kBuckets - 1))];
+  }
+  for (int p = 0; p < passes; ++p) {
+    const int shift = p * kDigit;
+    std::size_t* start = counts.data() + static_cast<std::size_t>(p) * kBuckets;
     bool one_bucket = false;
-    for (const std::size_t c : start)
-      if (c == v.size()) one_bucket = true;
+    for (std::size_t b = 0; b < kBuckets; ++b)
+      if (start[b] == v.size()) one_bucket = true;
     if (one_bucket) continue;
     std::size_t sum = 0;
-    for (std::size_t& s : start) {
-      const std::size_t c = s;
-      s = sum;
+    for (std::size_t b = 0; b < kBuckets; ++b) {
+      const std::size_t c = start[b];
+      start[b] = sum;
       sum += c;
     }
     for (const T& x : v) scratch[start[static_cast<std::size_t>((key(x) >> shift) & (kBuckets - 1))]++] = x;

@@ -592,6 +592,11 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
       job_squares(tree, corners, j, squares);
       const BoxFaces faces = job_faces(faces_only, j);
       const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
+      // The job's box (a vertex job's united box) for its whole edges.
+      const BoxKey<3>& jkey = tree.key(j.leaf);
+      const GridPoint box_lo = j.kind == BoxKind::Vertex ? united_lo(jkey, j.block) : key_corner(jkey, 0);
+      GridPoint box_hi = box_lo;
+      for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
       for (const FaceSquare& s : squares) {
         // The square's centre, carried with its four corners (warp.hpp).
         // A final square's centre is no leaf corner (box_faces.hpp), so never
@@ -603,7 +608,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
           c2.f[static_cast<std::size_t>(s.u)] += s.side;
           c2.f[static_cast<std::size_t>(s.v)] += s.side;
           c3.f[static_cast<std::size_t>(s.v)] += s.side;
-          centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1});
+          centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1, {}});
         }
         for (const int f : faces.facets) {
           std::vector<int>& cf = centres[cit->second].facets;
@@ -613,13 +618,27 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
         for (std::size_t i = 0; i < ring.size(); ++i) {
           const GridPoint& p = ring[i];
           const auto [it, fresh] = index.try_emplace(p, candidates.size());
-          if (fresh) candidates.push_back({p, {}, {}, {}, -1});
+          if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
           WarpCandidate& c = candidates[it->second];
           c.level = std::max(c.level, level);
           for (const int f : faces.facets)
             if (std::find(c.facets.begin(), c.facets.end(), f) == c.facets.end()) c.facets.push_back(f);
           for (const GridPoint& q : {ring[(i + 1) % ring.size()], ring[(i + ring.size() - 1) % ring.size()]})
             if (std::find(c.neighbours.begin(), c.neighbours.end(), q) == c.neighbours.end()) c.neighbours.push_back(q);
+          // p lies on the box edge along `axis` when its other two
+          // coordinates are box bounds.
+          auto on_bound = [&](int a) {
+            const auto k = static_cast<std::size_t>(a);
+            return p.f[k] == box_lo.f[k] || p.f[k] == box_hi.f[k];
+          };
+          for (int axis = 0; axis < 3; ++axis) {
+            if (!on_bound((axis + 1) % 3) || !on_bound((axis + 2) % 3)) continue;
+            std::pair<GridPoint, GridPoint> edge{p, p};
+            edge.first.f[static_cast<std::size_t>(axis)] = box_lo.f[static_cast<std::size_t>(axis)];
+            edge.second.f[static_cast<std::size_t>(axis)] = box_hi.f[static_cast<std::size_t>(axis)];
+            if (std::find(c.box_edges.begin(), c.box_edges.end(), edge) == c.box_edges.end())
+              c.box_edges.push_back(edge);
+          }
         }
       }
     }

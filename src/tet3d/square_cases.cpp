@@ -358,6 +358,68 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
   return s == Sign::Positive;
 }
 
+// F's angle at P vertex v (between its two edges at v) exceeds 180 degrees:
+// the far end of F's second edge lies strictly on the side of the first
+// edge's other facet G1 that is not P's side of F's part of dP (the test of
+// sector_meets, exact orient3d).
+bool SquareDispatcher::reflex_at(int vertex, int facet) {
+  std::array<int, 2> e{-1, -1};
+  int found = 0;
+  for (const int x : vertex_edges(vertex)) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(x)];
+    if (de.facets[0] != facet && de.facets[1] != facet) continue;
+    if (found < 2) e[static_cast<std::size_t>(found)] = x;
+    ++found;
+  }
+  if (found != 2) return false;
+  const EdgeCone& c1 = cone(e[0]);
+  const FacetPlane& g1 = c1.f().facet() == facet ? c1.g() : c1.f();
+  const DomainEdge& d2 = domain_.edges[static_cast<std::size_t>(e[1])];
+  const Vec3 far2 = domain_.plc.vertices[static_cast<std::size_t>(d2.a == vertex ? d2.b : d2.a)];
+  return g1.side(far2) == (c1.convex() ? Sign::Positive : Sign::Negative);
+}
+
+// A square S of v's united box B meeting k >= 2 edges of v (thesis §4.4 has
+// no such case). S is a face of the finer side (split_square), so a face of
+// neighbour leaf cells outside B, and the edge phase (§4.1.4, edge_crowded)
+// left no component of P ∩ such a cell with two edges; a connected piece of
+// cone(v) ∩ S lies in one such component, so each piece holds at most one
+// edge. Directions from v into S form a convex set D (v is off S's plane);
+// the part of facet F's sector in D is at most two arcs, each ending at an
+// edge of F in D (two arcs only when F's angle at v is reflex and both its
+// edges at v meet S). So when every facet of M has an edge in M, the pieces
+// of cone(v) ∩ S are bounded inside S only by the two facet rays from the
+// crossing x_e of each edge e of M, and the piece at x_e is exactly
+// S ∩ wedge(e): the region Case B triangulates for e (cut_square_edge.hpp).
+// The neighbour cells triangulate the same pieces, one duplicate per
+// component (edge boxes, Case B with the same wedge), so both sides build
+// identical triangles. Checked here (exact): every facet of M is a facet of
+// an edge of M, and every two edges of M share a facet whose angle at v is
+// reflex (a slot or notch between them: the typical case, a notch at a
+// prism's cap corner whose two cap edges leave B through one square). Two
+// edges sharing a convex-angled facet, or none, would put them in one piece
+// or leave the separation unproved: InternalError as before.
+bool SquareDispatcher::separate_edge_pieces(int vertex, const Incidence& m) {
+  for (const int f : m.facets) {
+    bool attached = false;
+    for (const int e : m.edges) {
+      const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+      attached = attached || de.facets[0] == f || de.facets[1] == f;
+    }
+    if (!attached) return false;
+  }
+  for (std::size_t i = 0; i < m.edges.size(); ++i)
+    for (std::size_t j = i + 1; j < m.edges.size(); ++j) {
+      const DomainEdge& a = domain_.edges[static_cast<std::size_t>(m.edges[i])];
+      const DomainEdge& b = domain_.edges[static_cast<std::size_t>(m.edges[j])];
+      int shared = -1;
+      for (const int f : a.facets)
+        if (f >= 0 && (f == b.facets[0] || f == b.facets[1])) shared = f;
+      if (shared < 0 || !reflex_at(vertex, shared)) return false;
+    }
+  return true;
+}
+
 Sign SquareDispatcher::local_status(const Incidence& m, Vec3 p) {
   if (!m.vertices.empty() || m.edges.size() > 1 || m.facets.empty() || m.facets.size() > 2)
     throw InternalError("tet3d: no local model for these incidences");
@@ -374,6 +436,13 @@ SquareCase SquareDispatcher::triangulate(const FaceSquare& s, const BoxFaces& fa
   const std::vector<int>& mf = m.facets;
 
   SquareCase result = SquareCase::Nothing;
+  if (faces.kind == BoxKind::Vertex && m.vertices.empty() && me.size() > 1) {
+    // Several pieces of cone(v) ∩ S, one per edge (separate_edge_pieces).
+    if (!separate_edge_pieces(faces.apex, m)) throw InternalError("tet3d: " + describe(s, faces, m));
+    for (const int e : me) triangulate_edge_square(s, corners_, tree_, cone(e), book_, out, warps_);
+    ++counts_[static_cast<std::size_t>(SquareCase::BD)];
+    return SquareCase::BD;
+  }
   if (!m.vertices.empty() || me.size() > 1 || mf.size() > 2) throw InternalError("tet3d: " + describe(s, faces, m));
   if (mf.empty()) {
     if (!me.empty()) throw InternalError("tet3d: " + describe(s, faces, m));

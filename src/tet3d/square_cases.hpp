@@ -29,6 +29,10 @@
 //                                 (at most one: two would put their common P
 //                                 vertex on S), else any of them, which all
 //                                 give the same wedge (edge_for_square);
+//   M with k >= 2 edges, vertex box: one Case B per edge, each on its own
+//                                 piece S ∩ wedge(E) (a notch between two
+//                                 edges leaving the united box through S;
+//                                 conditions in separate_edge_pieces);
 //   anything else                 InternalError naming S and M (a P vertex in
 //                                 S, two facets without a common edge, two
 //                                 edges, ...: the octree's separation, §4.1.7,
@@ -142,6 +146,8 @@ class SquareDispatcher {
   bool plane_meets(int facet, const SquareGeometry& g);
   bool half_plane_meets(const EdgeCone& cone, int facet, const SquareGeometry& g);
   bool sector_meets(int vertex, int facet, const SquareGeometry& g);
+  bool reflex_at(int vertex, int facet);
+  bool separate_edge_pieces(int vertex, const Incidence& m);
   std::string describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const;
   // Refuses (DomainError, Unsupported) an edge of P between coplanar facets:
   // its cone is a half-space and Cases B/D have no wedge to work with.

@@ -124,15 +124,23 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // sorted end points, so both ends of a segment move alike.
     Vec3 x = x0;
     std::vector<std::pair<int, int>> seen;  // (axis, edge)
+    // Whole box edges first (§4.3 looks at box edges), then ring segments
+    // (pieces of box edges, or edges of smaller neighbouring squares): a
+    // ring point far from E on a box edge that passes near E moves with
+    // that edge's other points (same direction; the same length when they
+    // share h), so the edge stays straight (gap filled: moving only the
+    // pieces near E bent the box edge, the apex's cones onto the far
+    // squares inverted and the rebuild loop froze the whole edge: bounded
+    // random seed 122, docs/ALGORITHM.md §12.5).
+    std::vector<std::pair<GridPoint, GridPoint>> segments = c.box_edges;
+    for (const GridPoint& w : c.neighbours) segments.push_back({std::min(c.p, w), std::max(c.p, w)});
     for (const int e : edges) {
       const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
       const Vec3 ea = pv[static_cast<std::size_t>(de.a)], eb = pv[static_cast<std::size_t>(de.b)];
-      for (const GridPoint& w : c.neighbours) {
+      for (const auto& [lo, hi] : segments) {
         int axis = 0;
-        while (axis < 2 && w.f[static_cast<std::size_t>(axis)] == c.p.f[static_cast<std::size_t>(axis)]) ++axis;
+        while (axis < 2 && lo.f[static_cast<std::size_t>(axis)] == hi.f[static_cast<std::size_t>(axis)]) ++axis;
         if (std::find(seen.begin(), seen.end(), std::pair{axis, e}) != seen.end()) continue;
-        const GridPoint& lo = std::min(c.p, w);
-        const GridPoint& hi = std::max(c.p, w);
         const auto [ps, pe] = closest_points(grid_coordinates(tree, lo), grid_coordinates(tree, hi), ea, eb);
         if (!(norm(ps - pe) < h / 8)) continue;
         Vec3 ax;
@@ -372,7 +380,7 @@ WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, con
     for (const FaceSquare& s : squares)
       for (const GridPoint& p : square_ring(s, corners)) {
         const auto [it, fresh] = index.try_emplace(p, candidates.size());
-        if (fresh) candidates.push_back({p, {}, {}, {}, -1});
+        if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
         std::vector<int>& fs = candidates[it->second].facets;
         if (std::find(fs.begin(), fs.end(), fb.facet) == fs.end()) fs.push_back(fb.facet);
       }

@@ -62,6 +62,7 @@
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "pqmesh/domain.hpp"
@@ -85,6 +86,10 @@ struct WarpCandidate {
   // the smallest box containing p (a united box's ring point need not be a
   // leaf corner).
   std::int32_t level = -1;
+  // The whole box edges through p of the boxes using it, (low end, high
+  // end) along one axis (§4.3's first pass looks at box edges, not at the
+  // pieces between ring points: docs/ALGORITHM.md §12.5).
+  std::vector<std::pair<GridPoint, GridPoint>> box_edges;
 };
 // `frozen` (may be null): points never moved (counted in frozen_left when they would be).
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "tree/key.hpp"
-#include "tree/large_page_allocator.hpp"
+#include "geometry/large_page_allocator.hpp"
 
 namespace pqmesh::detail {
 
@@ -53,9 +53,13 @@ class KeyIndex {
   }
 
   // Grows the table now so that n keys fit without further growth; never shrinks.
+  // One reallocation to the final capacity (the doublings in between would each
+  // allocate, and the kernel clear, a fresh table).
   template <class HashOf>
   void reserve(std::size_t n, HashOf&& hash_of) {
-    while (n * 10 > slots_.size() * 7) grow(hash_of);
+    std::size_t size = slots_.size();
+    while (n * 10 > size * 7) size *= 2;
+    if (size > slots_.size()) grow_to(size, hash_of);
   }
 
  private:
@@ -73,7 +77,12 @@ class KeyIndex {
 
   template <class HashOf>
   void grow(HashOf&& hash_of) {
-    std::vector<Slot, LargePageAllocator<Slot>> old(slots_.size() * 2);
+    grow_to(slots_.size() * 2, hash_of);
+  }
+
+  template <class HashOf>
+  void grow_to(std::size_t size, HashOf&& hash_of) {
+    std::vector<Slot, LargePageAllocator<Slot>> old(size);
     old.swap(slots_);
     // Re-insert in old slot order: deterministic.
     for (const Slot& s : old)

@@ -183,6 +183,15 @@ GenericRoot<D> choose_generic_root_cube(const std::array<double, D>& lo, const s
         out.root.offset[a] = off;
         const double o = base.origin[a] + off;  // exact (see above)
         ok = o < lo[a] && o + base.size > hi[a];
+        // The Tree constructor's own check (tree_impl.hpp), verbatim: the
+        // planes of the root and its extended box, origin - 2S to origin +
+        // 3S shifted by off = K * 2^ge (K odd, so 2^ge is off's lowest bit),
+        // are exact doubles. Implied by `reach` above when off < S/32, which
+        // the coarsest levels (level <= 3: off = g >= S/32) do not give; tested
+        // here so that every returned root is accepted by construction.
+        const double planes = std::fmax(std::fabs(base.origin[a] - 2 * base.size),
+                                        std::fabs(base.origin[a] + 3 * base.size)) + std::fabs(off);
+        ok = ok && planes <= std::ldexp(1.0, 53 + ge);
         for (std::size_t i = 0; ok && i < coords[a].size(); ++i)
           ok = !detail::on_generic_plane(coords[a][i], base.origin[a], off, ge);
       }

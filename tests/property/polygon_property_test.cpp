@@ -25,22 +25,6 @@ constexpr std::uint64_t kPolygons = 300;
 using Loop = std::vector<Vec2>;
 
 
-// Interior angle at every corner, interior on the left of the loop: the angle
-// turning counter-clockwise from the next side to the previous one, in
-// (0, 2 pi). atan2 of (cross, dot) gives it in (-pi, pi]; negative values are
-// reflex corners and get 2 pi added.
-double brute_force_alpha(const std::vector<Loop>& loops) {
-  double best = HUGE_VAL;
-  for (const Loop& L : loops)
-    for (std::size_t i = 0; i < L.size(); ++i) {
-      const Vec2 v = L[i], prev = L[(i + L.size() - 1) % L.size()], next = L[(i + 1) % L.size()];
-      double t = std::atan2(cross(next - v, prev - v), dot(next - v, prev - v));
-      if (t < 0) t += 2 * std::numbers::pi;
-      best = std::min(best, t);
-    }
-  return best;
-}
-
 // Exact turn at the lowest (then leftmost) vertex of a cyclic sequence.
 Sign lowest_corner_turn(const std::vector<Vec2>& P, const std::vector<int>& loop) {
   std::size_t k = 0;
@@ -128,7 +112,7 @@ TEST(PolygonProperty, DomainAreaOrientationAndAlpha) {
     }
 
     const AlphaResult alpha = compute_alpha(P, d.loops);
-    EXPECT_NEAR(alpha.radians, brute_force_alpha(poly.loops), 1e-12);
+    EXPECT_NEAR(alpha.radians, smallest_corner_angle(poly.loops), 1e-12);
     EXPECT_GT(alpha.radians, 0);
     EXPECT_LT(alpha.radians, std::numbers::pi);  // a polygon always has a convex corner
 
@@ -155,7 +139,7 @@ TEST(PolygonProperty, CorpusCoversTheHardCases) {
     spikes += poly.spikes > 0;
     near += poly.near_touching > 0;
     snapped += poly.snapped > 0;
-    const double a = brute_force_alpha(poly.loops);
+    const double a = smallest_corner_angle(poly.loops);
     smallest = std::min(smallest, a);
     below_3_deg += a < 3 * std::numbers::pi / 180;
     if (poly.loops.size() > 1) tiny_gap += min_loop_gap(poly.loops) < 5e-3 * outer_diameter(poly.loops[0]);

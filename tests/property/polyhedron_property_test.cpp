@@ -33,20 +33,6 @@ double polygon_area(const std::vector<Loop>& loops) {  // outer CCW, holes CW
   return a;
 }
 
-// Interior angle at every corner with the interior on the left (see
-// polygon_property_test.cpp).
-double brute_force_alpha2(const std::vector<Loop>& loops) {
-  double best = HUGE_VAL;
-  for (const Loop& L : loops)
-    for (std::size_t i = 0; i < L.size(); ++i) {
-      const Vec2 v = L[i], prev = L[(i + L.size() - 1) % L.size()], next = L[(i + 1) % L.size()];
-      double t = std::atan2(cross(next - v, prev - v), dot(next - v, prev - v));
-      if (t < 0) t += 2 * std::numbers::pi;
-      best = std::min(best, t);
-    }
-  return best;
-}
-
 // Volume of the solid {(c + lambda(z)(p - c), z)}: the section at height z is
 // the base scaled by lambda(z) = 1 + (s - 1) z / h, so its area is
 // A lambda(z)^2 and the integral over [0, h] is A h (1 + s + s^2) / 3 (s = 1:
@@ -201,7 +187,7 @@ TEST(PolyhedronProperty, DomainVolumeAlphaAndFacetTriangles) {
     // still has the polygon's corners (edge-edge candidates, the smallest one
     // convex), and one ring of horizontal edges has an acute dihedral (the
     // walls lean in for s < 1, out for s > 1), so alpha <= min(a2, 90 deg).
-    const double a2 = brute_force_alpha2(R.base.loops);
+    const double a2 = smallest_corner_angle(R.base.loops);
     const double expected = std::min(a2, std::numbers::pi / 2);
     AlphaResult alpha;
     try {
@@ -333,7 +319,7 @@ TEST(PolyhedronProperty, CorpusCoversTheHardCases) {
     cavities += !R.cavities.empty();
     two_shells += R.cavities.size() == 2;
     through += R.base.loops.size() > 1;
-    sharp += brute_force_alpha2(R.base.loops) < 5 * std::numbers::pi / 180;
+    sharp += smallest_corner_angle(R.base.loops) < 5 * std::numbers::pi / 180;
     for (const Cavity& c : R.cavities) {
       prism_cavities += !c.box;
       tiny_gap += c.z0 < 0.01 * R.height || c.z1 > 0.99 * R.height;

@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <sstream>
@@ -713,6 +714,18 @@ double shoelace(const std::vector<Vec2>& loop) {
   double twice = 0;
   for (std::size_t i = 1; i + 1 < loop.size(); ++i) twice += cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
   return twice / 2;
+}
+
+double smallest_corner_angle(const std::vector<std::vector<Vec2>>& loops) {
+  double best = HUGE_VAL;
+  for (const std::vector<Vec2>& L : loops)
+    for (std::size_t i = 0; i < L.size(); ++i) {
+      const Vec2 v = L[i], prev = L[(i + L.size() - 1) % L.size()], next = L[(i + 1) % L.size()];
+      double t = std::atan2(cross(next - v, prev - v), dot(next - v, prev - v));
+      if (t < 0) t += 2 * std::numbers::pi;
+      best = std::min(best, t);
+    }
+  return best;
 }
 
 }  // namespace pqmesh::test

@@ -150,4 +150,11 @@ std::string describe_polyhedron(std::uint64_t seed, const PolyhedronOptions& opt
 // polygons). Positive for a counter-clockwise loop.
 double shoelace(const std::vector<Vec2>& loop);
 
+// Independent oracle for compute_alpha: the smallest interior corner angle
+// (radians) over the loops, interior on the left of each loop. At every
+// corner, the angle turning counter-clockwise from the next side to the
+// previous one, in (0, 2 pi): atan2 of (cross, dot) gives it in (-pi, pi],
+// and a negative value is a reflex corner, which gets 2 pi added.
+double smallest_corner_angle(const std::vector<std::vector<Vec2>>& loops);
+
 }  // namespace pqmesh::test

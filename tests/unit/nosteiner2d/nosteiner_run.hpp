@@ -27,6 +27,10 @@ struct RunStats {
   std::vector<double> ratios;
   std::string worst;                      // the domain realising min_ratio
   double output_min_ratio = 1e300;        // achieved / g of the output (after keep_better_cdt)
+  // The construction before the quality post-pass (NoSteinerStats::construction_min_angle).
+  int construction_worse_than_cdt = 0;
+  double construction_min_ratio = 1e300;
+  std::vector<double> construction_ratios;
   // min_ratio .. min_vs_cdt and the path counts describe the pipeline before
   // keep_better_cdt (NoSteinerStats::pipeline_*).
 };
@@ -70,6 +74,14 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
     EXPECT_GE(s.min_angle, s.cdt_min_angle);
   }
   EXPECT_GE(s.min_angle, s.pipeline_min_angle);
+  // The quality post-pass never lowers the min angle (quality_pass.hpp).
+  EXPECT_GE(s.pipeline_min_angle, s.construction_min_angle);
+  if (!options.quality_pass) {
+    EXPECT_EQ(s.pipeline_min_angle, s.construction_min_angle);
+  }
+  if (s.construction_min_angle < s.cdt_min_angle) ++st.construction_worse_than_cdt;
+  st.construction_min_ratio = std::min(st.construction_min_ratio, s.construction_min_angle / s.g);
+  st.construction_ratios.push_back(s.construction_min_angle / s.g);
   // The pipeline before that choice, measured (the finding of §11.12).
   const double pipeline_ratio = s.pipeline_min_angle / s.g;
   (s.pipeline_path == NoSteinerPath::Full ? st.full : s.pipeline_path == NoSteinerPath::QOnly ? st.q_only : st.cdt)++;
@@ -88,9 +100,13 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
 }
 
 inline void print(const RunStats& st, const char* what) {
-  std::vector<double> r = st.ratios;
+  std::vector<double> r = st.ratios, c = st.construction_ratios;
   std::sort(r.begin(), r.end());
+  std::sort(c.begin(), c.end());
   const double median = r.empty() ? 0 : r[r.size() / 2];
+  std::cout << "[no-boundary-Steiner] " << what << ": construction (before the quality pass) achieved/g min "
+            << st.construction_min_ratio << ", median " << (c.empty() ? 0 : c[c.size() / 2])
+            << ", worse than the CDT on " << st.construction_worse_than_cdt << "; after the pass:\n";
   std::cout << "[no-boundary-Steiner] " << what << ": " << st.domains << " domains (pipeline: full " << st.full
             << ", q-only fallback " << st.q_only << ", cdt fallback " << st.cdt << "; output: cdt-better "
             << st.cdt_better << ", output achieved/g min " << st.output_min_ratio << "); pipeline achieved/g min " << st.min_ratio

@@ -1,5 +1,5 @@
-// Three warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
-// §12.5): a face square's centre is carried with its corners (warp.hpp), a
+// Warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
+// §12.5), and §4.3's first pass on whole box edges: a face square's centre is carried with its corners (warp.hpp), a
 // move refused because it would cross another facet's plane is shortened
 // (warp.hpp), and a P edge crosses a square whose corners moved where it
 // meets their mean plane (warped_crossing.hpp). Expected points are derived by hand from the
@@ -55,8 +55,8 @@ std::vector<WarpCandidate> bottom_candidates(const OctTree& t, const FaceSquare&
   for (int f = 0; f < facets; ++f) all.push_back(f);
   const GridPoint c[4] = {corner_of(t, 0), corner_of(t, 1), corner_of(t, 3), corner_of(t, 2)};  // around the face
   std::vector<WarpCandidate> out;
-  for (int i = 0; i < 4; ++i) out.push_back({c[i], all, {c[(i + 1) % 4], c[(i + 3) % 4]}, {}, 0});
-  out.push_back({s.centre(), all, {}, {c[0], c[1], c[2], c[3]}, -1});
+  for (int i = 0; i < 4; ++i) out.push_back({c[i], all, {c[(i + 1) % 4], c[(i + 3) % 4]}, {}, 0, {}});
+  out.push_back({s.centre(), all, {}, {c[0], c[1], c[2], c[3]}, -1, {}});
   return out;
 }
 
@@ -147,7 +147,7 @@ TEST(WarpRules, RefusedMoveIsShortened) {
   ASSERT_GE(f, 0);
   ASSERT_GE(g, 0);
   const std::vector<WarpCandidate> cand = {
-      {corner_of(t, 0), {f, g}, {corner_of(t, 1), corner_of(t, 2)}, {}, 0}};
+      {corner_of(t, 0), {f, g}, {corner_of(t, 1), corner_of(t, 2)}, {}, 0, {}}};
   const WarpTable w = warp_box_vertices(t, corners, d, cand);
   const Warp* v = w.find(corner_of(t, 0));
   ASSERT_NE(v, nullptr);
@@ -192,6 +192,40 @@ TEST(WarpRules, EdgeCrossingMovesOntoTheWarpedSquare) {
   EXPECT_LT(std::sqrt(2.0) * 0.02, 1.0 / 32);
   // E parallel to the square's mean plane (along x): no crossing.
   EXPECT_FALSE(warped_square_crossing({-1, 0.5, -0.01}, {2, 0.5, -0.01}, s, t, &w).has_value());
+}
+
+TEST(WarpRules, FirstPassLooksAtWholeBoxEdges) {
+  // P = [1/64, 2] x [-1, 2] x [-1, 1/4]; E, between the top facet (z = 1/4)
+  // and the facet x = 1/64, is the line (1/64, y, 1/4). Root cube [0, 1]^3,
+  // h = 1. The box vertex v = (0, 0, 1) has ring neighbours (0, 0, 1/2) (a
+  // smaller neighbour's corner splits the box edge x = y = 0) and (1, 0, 1):
+  // both ring segments stay >= 1/4 > h/8 from E, and v is >= 3/4 from both
+  // facets (neither pass moves it). The whole box edge x = y = 0, z in
+  // [0, 1], passes 1/64 < h/8 from E: §4.3's first pass moves v h/8 along
+  // cross(E, z) = x, away from E (E is at x = 1/64 > 0): to (-1/8, 0, 1).
+  // Sides kept: the planes x = 1/64 and z = 1/4, and the segment to
+  // (1, 0, 1), crossed by x = 1/64, still passes above E's line.
+  const OctTree t(RootCube<3>{{0, 0, 0}, 1});
+  const CornerSet corners(t, t.leaves());
+  const Domain3 d = box_domain({1.0 / 64, -1, -1}, {2, 2, 0.25});
+  const int f = facet_at(d, {1, 0, 0.25}), g = facet_at(d, {1.0 / 64, 0, 0});
+  ASSERT_GE(f, 0);
+  ASSERT_GE(g, 0);
+  const GridPoint v = corner_of(t, 4), below = corner_of(t, 0);
+  GridPoint mid = v;
+  mid.f[2] = (v.f[2] + below.f[2]) / 2;
+  const std::vector<GridPoint> ring = {mid, corner_of(t, 5)};
+  const std::vector<WarpCandidate> segments_only = {{v, {f, g}, ring, {}, 0, {}}};
+  EXPECT_EQ(warp_box_vertices(t, corners, d, segments_only).find(v), nullptr);
+  const std::vector<WarpCandidate> with_edge = {{v, {f, g}, ring, {}, 0, {{below, v}}}};
+  const WarpTable w = warp_box_vertices(t, corners, d, with_edge);
+  const Warp* moved = w.find(v);
+  ASSERT_NE(moved, nullptr);
+  EXPECT_EQ(moved->at.x, -1.0 / 8);
+  EXPECT_EQ(moved->at.y, 0.0);
+  EXPECT_EQ(moved->at.z, 1.0);
+  EXPECT_EQ(w.first_pass, 1);
+  EXPECT_EQ(w.conflicts, 0);
 }
 
 }  // namespace

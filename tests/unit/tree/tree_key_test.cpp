@@ -73,6 +73,26 @@ TYPED_TEST(TreeKey, PrefetchSplitChangesNothing) {
   for (int c = 0; c < (1 << D); ++c) EXPECT_EQ(t.find(t.key(first + c)), first + c);
 }
 
+// reserve() jumps the key index straight to its final capacity (several doublings
+// at once) with keys already in it: every key must still be found, and the tree
+// must be the one built without the reservation (same ids and keys).
+TYPED_TEST(TreeKey, ReserveKeepsKeysAndIds) {
+  constexpr int D = TypeParam::value;
+  auto plain = test::unit_tree<D>();
+  auto reserved = test::unit_tree<D>();
+  test::refine_uniform(plain, 2);
+  test::refine_uniform(reserved, 2);
+  reserved.reserve(1 << 16);  // 64 slots -> 2^17: eleven doublings in one step
+  for (std::int32_t n = 0; n < reserved.size(); ++n) EXPECT_EQ(reserved.find(reserved.key(n)), n);
+  test::refine_uniform(plain, D == 2 ? 5 : 3);
+  test::refine_uniform(reserved, D == 2 ? 5 : 3);
+  ASSERT_EQ(plain.size(), reserved.size());
+  for (std::int32_t n = 0; n < reserved.size(); ++n) {
+    EXPECT_EQ(reserved.key(n), plain.key(n));
+    EXPECT_EQ(reserved.find(plain.key(n)), n);
+  }
+}
+
 // Root [-2, 2] x [4, 8] (x [-2, 2]): origin is a multiple of size/2 = 2. The level-3
 // cell (5, 3, 1) spans, by hand: x = -2 + 4*5/8 = 0.5 .. 1.0, y = 4 + 4*3/8 = 5.5 ..
 // 6.0, z = -2 + 4*1/8 = -1.5 .. -1.0.

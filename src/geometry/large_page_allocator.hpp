@@ -1,5 +1,6 @@
 #pragma once
-// Allocator for big random-access tables (the tree's key index): an allocation of
+// Allocator for big tables written all over (the tree's key index, the mesh
+// checker's edge records; here, below both, so that both can use it): an allocation of
 // 4 MiB or more is aligned to 2 MiB and, on Linux, marked MADV_HUGEPAGE, so that
 // with transparent huge pages in "madvise" mode the kernel backs it by 2 MiB pages
 // (512 times fewer page faults, and random probes stop missing the TLB). Only

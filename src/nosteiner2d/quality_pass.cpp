@@ -1,0 +1,549 @@
+// Quality post-pass (quality_pass.hpp; docs/ALGORITHM.md §11.12): flips,
+// removals and moves of Steiner vertices at the worst triangle, each accepted
+// only when exact orient2d keeps every triangle it makes strictly
+// counter-clockwise and the smallest angle it makes is above the worst one's.
+#include "nosteiner2d/quality_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <queue>
+#include <utility>
+
+#include "nosteiner2d/triangle_angles.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::detail {
+namespace {
+
+bool ccw(Vec2 a, Vec2 b, Vec2 c) { return orient2d(a, b, c) == Sign::Positive; }
+
+// p in the bounding box of ab (with orient2d(a, b, p) == 0: p on the closed segment ab).
+bool in_box(Vec2 a, Vec2 b, Vec2 p) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
+// The closed segments ab and cd share a point (exact).
+bool closed_segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = int(orient2d(a, b, c)), o2 = int(orient2d(a, b, d));
+  const int o3 = int(orient2d(c, d, a)), o4 = int(orient2d(c, d, b));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && in_box(a, b, c)) || (o2 == 0 && in_box(a, b, d)) || (o3 == 0 && in_box(c, d, a)) ||
+         (o4 == 0 && in_box(c, d, b));
+}
+
+// b strictly inside the interior cone of the CCW polygon q at vertex i (a
+// straight vertex has the open half-plane on its left as cone).
+bool in_cone(const std::vector<Vec2>& q, std::size_t i, Vec2 b) {
+  const std::size_t m = q.size();
+  const Vec2 a = q[i], a0 = q[(i + m - 1) % m], a1 = q[(i + 1) % m];
+  if (orient2d(a0, a, a1) == Sign::Positive)  // convex: between a->a1 and a->a0
+    return orient2d(a, a1, b) == Sign::Positive && orient2d(a, a0, b) == Sign::Negative;
+  // reflex or straight: not in the closed exterior cone from a->a0 to a->a1
+  return !(orient2d(a, a0, b) != Sign::Negative && orient2d(a, a1, b) != Sign::Positive);
+}
+
+// q[i] q[j] (not adjacent) is a diagonal of the simple CCW polygon q: inside
+// both end cones, meeting no side away from its ends, through no vertex.
+bool is_diagonal(const std::vector<Vec2>& q, std::size_t i, std::size_t j) {
+  if (!in_cone(q, i, q[j]) || !in_cone(q, j, q[i])) return false;
+  const std::size_t m = q.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    if (k == i || k == j) continue;
+    if (orient2d(q[i], q[j], q[k]) == Sign::Zero && in_box(q[i], q[j], q[k])) return false;
+    const std::size_t k1 = (k + 1) % m;
+    if (k1 == i || k1 == j) continue;
+    if (closed_segments_meet(q[i], q[j], q[k], q[k1])) return false;
+  }
+  return true;
+}
+
+// The triangulation of the simple CCW polygon q with the largest min angle
+// (dynamic programming over the sub-polygons q[i..j] cut off by a diagonal
+// or side ij; first maximum in k order). Returns -1 when q has none with
+// every triangle strictly counter-clockwise.
+double best_triangulation(const std::vector<Vec2>& q, std::vector<std::array<int, 3>>& out) {
+  const int m = int(q.size());
+  auto at = [m](int i, int j) { return std::size_t(i * m + j); };
+  std::vector<char> ok(std::size_t(m * m), 0);
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j)
+      ok[at(i, j)] = (j == i + 1 || (i == 0 && j == m - 1)) ? 1 : char(is_diagonal(q, std::size_t(i), std::size_t(j)));
+  std::vector<double> best(std::size_t(m * m), -1);
+  std::vector<int> arg(std::size_t(m * m), -1);
+  for (int len = 2; len < m; ++len)
+    for (int i = 0; i + len < m; ++i) {
+      const int j = i + len;
+      if (!ok[at(i, j)]) continue;
+      for (int k = i + 1; k < j; ++k) {
+        if (!ok[at(i, k)] || !ok[at(k, j)]) continue;
+        if (k > i + 1 && best[at(i, k)] < 0) continue;
+        if (j > k + 1 && best[at(k, j)] < 0) continue;
+        if (!ccw(q[std::size_t(i)], q[std::size_t(k)], q[std::size_t(j)])) continue;
+        double v = min_angle(q[std::size_t(i)], q[std::size_t(k)], q[std::size_t(j)]);
+        if (k > i + 1) v = std::min(v, best[at(i, k)]);
+        if (j > k + 1) v = std::min(v, best[at(k, j)]);
+        if (v > best[at(i, j)]) {
+          best[at(i, j)] = v;
+          arg[at(i, j)] = k;
+        }
+      }
+    }
+  if (m < 3 || best[at(0, m - 1)] < 0) return -1;
+  out.clear();
+  std::vector<std::pair<int, int>> todo = {{0, m - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    const int k = arg[at(i, j)];
+    out.push_back({i, k, j});
+    if (k > i + 1) todo.push_back({i, k});
+    if (j > k + 1) todo.push_back({k, j});
+  }
+  return best[at(0, m - 1)];
+}
+
+class Pass {
+ public:
+  Pass(TriMesh2& mesh, int first_steiner, const QualityPassOptions& options)
+      : mesh_(mesh), pts_(mesh.vertices), first_steiner_(first_steiner), options_(options),
+        inc_(mesh.vertices.size()) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      add(mesh.triangles[t], mesh.triangle_markers.empty() ? 0 : mesh.triangle_markers[t]);
+  }
+
+  QualityPassStats run() {
+    QualityPassStats st;
+    st.min_angle_before = current_min();
+    const std::int64_t max_steps =
+        options_.max_steps >= 0 ? options_.max_steps : 4 * std::int64_t(pts_.size()) + 1000;
+    {  // one coarsening sweep over all Steiner vertices first (cheaper than many local ones)
+      std::vector<int> all;
+      for (std::size_t v = std::size_t(first_steiner_); v < pts_.size(); ++v) all.push_back(int(v));
+      const std::int64_t removed = remove_above(all, st.min_angle_before);
+      st.coarsened += removed;
+      st.steps += removed;
+    }
+    while (st.steps < max_steps) {
+      const int t = worst();
+      if (t < 0) break;
+      if (!improve(t, st)) {
+        std::int64_t removed = 0;  // the neighbourhood, then 8 times larger
+        for (std::size_t size = std::size_t(options_.coarsen_triangles); removed == 0 && size <= 8 * std::size_t(options_.coarsen_triangles); size *= 8)
+          removed = coarsen(t, size, angle_[std::size_t(t)]);
+        if (removed == 0) {
+          st.stopped_stuck = true;
+          break;
+        }
+        st.coarsened += removed;
+        st.steps += removed;
+        continue;
+      }
+      ++st.steps;
+    }
+    st.min_angle_after = current_min();
+    write_back();
+    return st;
+  }
+
+ private:
+  struct Link {
+    std::vector<int> star;     // triangle ids around v
+    std::vector<int> polygon;  // link vertices, counter-clockwise around v
+  };
+
+  int add(std::array<int, 3> t, int marker) {
+    const int id = int(tri_.size());
+    tri_.push_back(t);
+    marker_.push_back(marker);
+    alive_.push_back(1);
+    const double a = min_angle(pts_[std::size_t(t[0])], pts_[std::size_t(t[1])], pts_[std::size_t(t[2])]);
+    angle_.push_back(a);
+    for (int v : t) inc_[std::size_t(v)].push_back(id);
+    heap_.push({a, id});
+    return id;
+  }
+
+  int worst() {
+    while (!heap_.empty() && !alive_[std::size_t(heap_.top().second)]) heap_.pop();
+    return heap_.empty() ? -1 : heap_.top().second;
+  }
+
+  double current_min() {
+    const int t = worst();
+    return t < 0 ? 0 : angle_[std::size_t(t)];
+  }
+
+  // Live triangles at v (drops dead ids from inc_[v]).
+  std::vector<int>& star(int v) {
+    auto& s = inc_[std::size_t(v)];
+    s.erase(std::remove_if(s.begin(), s.end(), [&](int t) { return !alive_[std::size_t(t)]; }), s.end());
+    return s;
+  }
+
+  // The link of v as a closed CCW cycle; false when the star is not a disk
+  // around v (v on the boundary), which never holds for a Steiner vertex.
+  bool link(int v, Link& out) {
+    out.star = star(v);
+    const std::size_t n = out.star.size();
+    std::vector<std::pair<int, int>> arcs;  // a -> b for triangle (v, a, b)
+    for (int t : out.star) {
+      const auto& tr = tri_[std::size_t(t)];
+      const int r = tr[0] == v ? 0 : tr[1] == v ? 1 : 2;
+      arcs.push_back({tr[std::size_t((r + 1) % 3)], tr[std::size_t((r + 2) % 3)]});
+    }
+    out.polygon.clear();
+    if (n < 3) return false;
+    int cur = arcs[0].first;
+    for (std::size_t step = 0; step < n; ++step) {
+      out.polygon.push_back(cur);
+      const auto it = std::find_if(arcs.begin(), arcs.end(), [&](const auto& a) { return a.first == cur; });
+      if (it == arcs.end()) return false;
+      cur = it->second;
+    }
+    if (cur != out.polygon.front()) return false;
+    std::vector<int> sorted = out.polygon;
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+
+  // Min angle of the star of v with v at p; -1 when a triangle is not strictly CCW.
+  double star_quality(const std::vector<int>& polygon, Vec2 p) const {
+    double m = 4;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2 a = pts_[std::size_t(polygon[i])], b = pts_[std::size_t(polygon[(i + 1) % polygon.size()])];
+      if (!ccw(p, a, b)) return -1;
+      m = std::min(m, min_angle(p, a, b));
+    }
+    return m;
+  }
+
+  // Compass search for the position of v maximising its star's min angle.
+  double best_position(const std::vector<int>& polygon, int v, Vec2& best) const {
+    best = pts_[std::size_t(v)];
+    double f = star_quality(polygon, best);
+    Vec2 c{0, 0};
+    for (int w : polygon) c = c + pts_[std::size_t(w)];
+    c = (1.0 / double(polygon.size())) * c;
+    if (const double fc = star_quality(polygon, c); fc > f) {
+      f = fc;
+      best = c;
+    }
+    double h = 1e300;
+    for (int w : polygon) h = std::min(h, norm(pts_[std::size_t(w)] - best));
+    h *= 0.25;
+    int evals = 2;
+    while (evals + 8 <= options_.move_evaluations) {
+      Vec2 step_best = best;
+      double step_f = f;
+      for (int k = 0; k < 8; ++k) {
+        const double a = std::numbers::pi * k / 4;
+        const Vec2 p = best + h * Vec2{std::cos(a), std::sin(a)};
+        if (const double fp = star_quality(polygon, p); fp > step_f) {
+          step_f = fp;
+          step_best = p;
+        }
+      }
+      evals += 8;
+      if (step_f > f) {
+        f = step_f;
+        best = step_best;
+      } else {
+        h *= 0.5;
+      }
+    }
+    return f;
+  }
+
+  // The triangle across the edge a -> b of a live triangle (b -> a in it), or -1.
+  int across(int a, int b) {
+    for (int u : star(a)) {
+      const auto& ut = tri_[std::size_t(u)];
+      for (int r = 0; r < 3; ++r)
+        if (ut[std::size_t(r)] == b && ut[std::size_t((r + 1) % 3)] == a) return u;
+    }
+    return -1;
+  }
+
+  // The first `size` triangles reached from t across edges (breadth first,
+  // edges in triangle order). When they form a disk (one simple boundary
+  // cycle, Euler characteristic 1) whose inner vertices are all Steiner
+  // vertices, returns the largest min angle of a triangulation of that cycle
+  // (no inner vertex: they are removed) and it in `tris`; else -1.
+  // The first `size` triangles reached from t across edges (breadth first, edges in triangle order).
+  std::vector<int> grow(int t, std::size_t size) {
+    std::vector<int> region = {t};
+    std::vector<char>& seen = seen_;
+    seen.resize(tri_.size(), 0);
+    seen[std::size_t(t)] = 1;
+    for (std::size_t head = 0; head < region.size() && region.size() < size; ++head) {
+      const auto tr = tri_[std::size_t(region[head])];
+      for (int e = 0; e < 3 && region.size() < size; ++e) {
+        const int u = across(tr[std::size_t(e)], tr[std::size_t((e + 1) % 3)]);
+        if (u >= 0 && !seen[std::size_t(u)]) {
+          seen[std::size_t(u)] = 1;
+          region.push_back(u);
+        }
+      }
+    }
+    for (int r : region) seen[std::size_t(r)] = 0;
+    return region;
+  }
+
+  // Stuck at t: remove the Steiner vertices of the `size` triangles around t
+  // (in the order reached) whose star polygon has a triangulation with every
+  // angle above `floor` (the mesh's smallest angle), so that the next single
+  // changes at t have room. Returns the number removed.
+  std::int64_t coarsen(int t, std::size_t size, double floor) {
+    std::vector<int> verts;
+    for (int r : grow(t, size))
+      for (int v : tri_[std::size_t(r)])
+        if (v >= first_steiner_) verts.push_back(v);
+    std::vector<int> order;  // first occurrence order
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    for (int r : grow(t, size))
+      for (int v : tri_[std::size_t(r)])
+        if (v >= first_steiner_) {
+          const auto it = std::lower_bound(verts.begin(), verts.end(), v);
+          if (it != verts.end() && *it == v) {
+            order.push_back(v);
+            verts.erase(it);
+          }
+        }
+    return remove_above(order, floor);
+  }
+
+  // Removes, in the given order, each Steiner vertex whose star polygon has a
+  // triangulation with every angle above `floor`; returns the number removed.
+  std::int64_t remove_above(const std::vector<int>& verts, double floor) {
+    std::int64_t removed = 0;
+    Link lk;
+    for (int v : verts) {
+      if (!link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
+      std::vector<Vec2> q;
+      for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
+      std::vector<std::array<int, 3>> tris;
+      if (best_triangulation(q, tris) <= floor) continue;
+      const int marker = marker_[std::size_t(lk.star.front())];
+      for (int s : lk.star) alive_[std::size_t(s)] = 0;
+      for (const auto& x : tris)
+        add({lk.polygon[std::size_t(x[0])], lk.polygon[std::size_t(x[1])], lk.polygon[std::size_t(x[2])]}, marker);
+      ++removed;
+    }
+    return removed;
+  }
+
+  double cavity(int t, std::size_t size, std::vector<int>& region, std::vector<std::array<int, 3>>& tris) {
+    region = grow(t, size);
+    if (region.size() < size) return -1;
+    std::vector<std::pair<int, int>> boundary;
+    std::vector<int> vertices;
+    for (int r : region) {
+      const auto tr = tri_[std::size_t(r)];
+      for (int e = 0; e < 3; ++e) {
+        const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)];
+        vertices.push_back(a);
+        const int u = across(a, b);
+        if (u < 0 || std::find(region.begin(), region.end(), u) == region.end()) boundary.push_back({a, b});
+      }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const std::int64_t edges = (3 * std::int64_t(region.size()) + std::int64_t(boundary.size())) / 2;
+    if (std::int64_t(vertices.size()) - edges + std::int64_t(region.size()) != 1) return -1;
+    std::vector<int> cycle;
+    int cur = boundary[0].first;
+    for (std::size_t k = 0; k < boundary.size(); ++k) {
+      cycle.push_back(cur);
+      int next = -1, outs = 0;
+      for (const auto& [a, b] : boundary)
+        if (a == cur) {
+          next = b;
+          ++outs;
+        }
+      if (outs != 1) return -1;
+      cur = next;
+    }
+    if (cur != cycle.front()) return -1;
+    std::vector<int> sorted = cycle;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return -1;
+    for (int v : vertices)  // inner vertices are removed: Steiner ones only
+      if (!std::binary_search(sorted.begin(), sorted.end(), v) && v < first_steiner_) return -1;
+    if (cycle.size() > std::size_t(options_.max_star)) return -1;
+    std::vector<Vec2> q;
+    for (int v : cycle) q.push_back(pts_[std::size_t(v)]);
+    std::vector<std::array<int, 3>> local;
+    const double f = best_triangulation(q, local);
+    tris.clear();
+    for (const auto& x : local)
+      tris.push_back({cycle[std::size_t(x[0])], cycle[std::size_t(x[1])], cycle[std::size_t(x[2])]});
+    return f;
+  }
+
+  // One change at the worst triangle t; false when none raises its angle.
+  bool improve(int t, QualityPassStats& st) {
+    const double base = angle_[std::size_t(t)];
+    const auto tr = tri_[std::size_t(t)];
+    enum class Kind { None, Flip, Remove, Move, Cavity } kind = Kind::None;
+    double value = base;
+    int flip_edge = -1, flip_other = -1, flip_apex = -1, vertex = -1;
+    std::vector<std::array<int, 3>> removal;
+    Vec2 moved{};
+    Link lk;
+    for (int e = 0; e < 3; ++e) {  // flips
+      const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)], c = tr[std::size_t((e + 2) % 3)];
+      for (int u : star(a)) {
+        if (u == t) continue;
+        const auto& ut = tri_[std::size_t(u)];
+        const int r = ut[0] == b ? 0 : ut[1] == b ? 1 : ut[2] == b ? 2 : -1;
+        if (r < 0 || ut[std::size_t((r + 1) % 3)] != a) continue;  // u = (b, a, d)
+        const int d = ut[std::size_t((r + 2) % 3)];
+        const Vec2 pa = pts_[std::size_t(a)], pb = pts_[std::size_t(b)], pc = pts_[std::size_t(c)],
+                   pd = pts_[std::size_t(d)];
+        if (!ccw(pa, pd, pc) || !ccw(pb, pc, pd)) break;
+        const double v = std::min(min_angle(pa, pd, pc), min_angle(pb, pc, pd));
+        if (v > value) {
+          value = v;
+          kind = Kind::Flip;
+          flip_edge = e;
+          flip_other = u;
+          flip_apex = d;
+        }
+        break;
+      }
+    }
+    for (int v : tr) {  // removals
+      if (v < first_steiner_ || !link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
+      std::vector<Vec2> q;
+      for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
+      std::vector<std::array<int, 3>> tris;
+      const double f = best_triangulation(q, tris);
+      if (f > value) {
+        value = f;
+        kind = Kind::Remove;
+        vertex = v;
+        removal.clear();
+        for (const auto& x : tris)
+          removal.push_back({lk.polygon[std::size_t(x[0])], lk.polygon[std::size_t(x[1])],
+                             lk.polygon[std::size_t(x[2])]});
+      }
+    }
+    for (int v : tr) {  // moves
+      if (v < first_steiner_ || !link(v, lk)) continue;
+      Vec2 p;
+      const double f = best_position(lk.polygon, v, p);
+      if (f > value) {
+        value = f;
+        kind = Kind::Move;
+        vertex = v;
+        moved = p;
+      }
+    }
+    std::vector<int> region;
+    if (kind == Kind::None) {  // stuck for single changes: empty a small disk of triangles around t
+      for (std::size_t size = 4; size <= 64; size *= 2) {
+        std::vector<int> r;
+        std::vector<std::array<int, 3>> tris;
+        const double f = cavity(t, size, r, tris);
+        if (f > value) {
+          value = f;
+          kind = Kind::Cavity;
+          region = std::move(r);
+          removal = std::move(tris);
+        }
+      }
+    }
+    const int marker = marker_[std::size_t(t)];
+    switch (kind) {
+      case Kind::None: return false;
+      case Kind::Cavity: {
+        for (int s : region) alive_[std::size_t(s)] = 0;
+        for (const auto& x : removal) add(x, marker);
+        ++st.cavities;
+        return true;
+      }
+      case Kind::Flip: {
+        const int a = tr[std::size_t(flip_edge)], b = tr[std::size_t((flip_edge + 1) % 3)],
+                  c = tr[std::size_t((flip_edge + 2) % 3)];
+        const int other_marker = marker_[std::size_t(flip_other)];
+        alive_[std::size_t(t)] = alive_[std::size_t(flip_other)] = 0;
+        add({a, flip_apex, c}, marker);
+        add({b, c, flip_apex}, other_marker);
+        ++st.flips;
+        return true;
+      }
+      case Kind::Remove: {
+        const bool ok = link(vertex, lk);
+        (void)ok;
+        for (int s : lk.star) alive_[std::size_t(s)] = 0;
+        for (const auto& x : removal) add(x, marker);
+        ++st.removals;
+        return true;
+      }
+      case Kind::Move: {
+        link(vertex, lk);
+        std::vector<int> markers;
+        for (int s : lk.star) {
+          alive_[std::size_t(s)] = 0;
+          markers.push_back(marker_[std::size_t(s)]);
+        }
+        pts_[std::size_t(vertex)] = moved;
+        for (std::size_t i = 0; i < lk.star.size(); ++i) add(tri_[std::size_t(lk.star[i])], markers[i]);
+        ++st.moves;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Live triangles back into the mesh; unused Steiner vertices dropped.
+  void write_back() {
+    std::vector<int> id(pts_.size(), -1);
+    for (std::size_t v = 0; v < std::size_t(first_steiner_) && v < pts_.size(); ++v) id[v] = 0;
+    for (std::size_t t = 0; t < tri_.size(); ++t)
+      if (alive_[t])
+        for (int v : tri_[t]) id[std::size_t(v)] = 0;
+    std::vector<Vec2> vertices;
+    std::vector<int> vertex_markers;
+    for (std::size_t v = 0; v < pts_.size(); ++v) {
+      if (id[v] < 0) continue;
+      id[v] = int(vertices.size());
+      vertices.push_back(pts_[v]);
+      if (!mesh_.vertex_markers.empty()) vertex_markers.push_back(mesh_.vertex_markers[v]);
+    }
+    mesh_.triangles.clear();
+    mesh_.triangle_markers.clear();
+    for (std::size_t t = 0; t < tri_.size(); ++t) {
+      if (!alive_[t]) continue;
+      const auto& x = tri_[t];
+      mesh_.triangles.push_back({id[std::size_t(x[0])], id[std::size_t(x[1])], id[std::size_t(x[2])]});
+      mesh_.triangle_markers.push_back(marker_[t]);
+    }
+    mesh_.vertices = std::move(vertices);
+    if (!mesh_.vertex_markers.empty()) mesh_.vertex_markers = std::move(vertex_markers);
+  }
+
+  TriMesh2& mesh_;
+  std::vector<Vec2>& pts_;
+  int first_steiner_;
+  QualityPassOptions options_;
+  std::vector<std::array<int, 3>> tri_;
+  std::vector<int> marker_;
+  std::vector<char> alive_;
+  std::vector<double> angle_;
+  std::vector<std::vector<int>> inc_;
+  std::vector<char> seen_;  // scratch of grow(), all 0 between calls
+  std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> heap_;
+};
+
+}  // namespace
+
+QualityPassStats improve_min_angle(TriMesh2& mesh, int first_steiner, const QualityPassOptions& options) {
+  return Pass(mesh, first_steiner, options).run();
+}
+
+}  // namespace pqmesh::detail

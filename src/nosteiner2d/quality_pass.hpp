@@ -1,0 +1,68 @@
+#pragma once
+// A quality post-pass on a triangulation without boundary Steiner points (a
+// deviation beyond the thesis, docs/ALGORITHM.md §11.12): the thesis bounds the
+// min angle of its construction by a constant times g(P) (ch. 5), but the
+// constant is small, and the placement of its points (Q^c wedges, flat
+// Q-to-R boxes) leaves angles far below what the same domain allows.
+//
+// The pass repeatedly takes the triangle with the smallest angle and applies
+// the one local change that raises the smallest angle of the triangles it
+// replaces the most (strictly above that triangle's angle, else it stops):
+//   * flip an interior edge of the triangle (the two triangles of a strictly
+//     convex quadrilateral; a boundary edge has one triangle and is never flipped);
+//   * remove a Steiner vertex of the triangle: its star (a simple polygon,
+//     star-shaped from the vertex) is re-triangulated without it by the
+//     triangulation of that polygon with the largest min angle (dynamic
+//     programming over all its triangulations, diagonals decided by exact
+//     orient2d);
+//   * move a Steiner vertex of the triangle inside the kernel of its star
+//     (compass search on the star's min angle from the better of the current
+//     position and the centroid of the star's polygon);
+//   * only when none of these helps: empty a disk of 4, 8, ..., 64 triangles
+//     grown from the worst one (breadth first) of its inner (Steiner)
+//     vertices and re-triangulate its boundary polygon as above;
+//   * when nothing helps: coarsen around it - remove every Steiner vertex of
+//     the 256 triangles nearest to it (breadth first; 2048 when none of those
+//     is) whose star polygon has a triangulation with all angles above the
+//     mesh's smallest, then retry; stop when none is removable.
+//
+// Invariants (every accept decided by exact orient2d on the stored doubles):
+// every triangle stays strictly counter-clockwise; vertices with id <
+// first_steiner (the input vertices, the only ones on dP) are never moved or
+// removed, and no edge with one triangle (a boundary edge) changes, so no
+// Steiner point reaches dP and dP stays split exactly at the input vertices.
+// A moved vertex stays strictly inside the polygon of its star, which lies in
+// P. The smallest angle of the mesh never decreases (floating point angles
+// compared without tolerance: a measurement that chooses, never a validity
+// decision). Deterministic: ties go to the first candidate in the order
+// flips (edge order of the triangle), removals, moves (vertex order). Bounded:
+// at most max_steps accepted changes.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pqmesh/mesh.hpp"
+
+namespace pqmesh::detail {
+
+struct QualityPassStats {
+  double min_angle_before = 0, min_angle_after = 0;  // radians
+  std::int64_t flips = 0, removals = 0, moves = 0, cavities = 0, coarsened = 0, steps = 0;
+  bool stopped_stuck = false;  // stopped because no change raised the worst triangle (else: step bound)
+};
+
+struct QualityPassOptions {
+  std::int64_t max_steps = -1;  // < 0: 4 * (vertex count) + 1000
+  int max_star = 64;            // stars / cavities with more boundary vertices are not re-triangulated (the DP is cubic)
+  int move_evaluations = 48;    // star evaluations per compass search
+  int coarsen_triangles = 256;  // stuck: neighbourhood (triangles) whose removable Steiner vertices go
+};
+
+// Improves `mesh` in place (triangles, triangle_markers, vertices; unused
+// Steiner vertices are dropped at the end and the rest renumbered in order;
+// ids < first_steiner are unchanged). Triangles made by a change take the
+// marker of the triangle it started from. mesh.edges are left as they are
+// (they must only name vertices < first_steiner).
+QualityPassStats improve_min_angle(TriMesh2& mesh, int first_steiner, const QualityPassOptions& options = {});
+
+}  // namespace pqmesh::detail
