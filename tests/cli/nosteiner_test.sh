@@ -36,6 +36,15 @@ expect 0 "comb --thesis-fans" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/f
 contains "$work/out" "^mode .*connected by the thesis's fans" "--thesis-fans named in the mode line"
 contains "$work/out" "^path +full" "--thesis-fans keeps the fans' mesh"
 expect 0 "comb --thesis-fans check" -- "$pqmesh" check "$work/fans.vtu" --domain "$data/2d/comb.poly" --no-boundary-steiner
+# The quality post-pass (on by default) raises the comb's min angle; --no-quality-pass keeps the
+# construction's mesh. Both pass the checker.
+expect 0 "comb --no-quality-pass" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/nopass.vtu" --no-boundary-steiner --no-quality-pass
+contains "$work/out" "^post-pass .*quality pass off" "--no-quality-pass named in the post-pass line"
+expect 0 "comb --no-quality-pass check" -- "$pqmesh" check "$work/nopass.vtu" --domain "$data/2d/comb.poly" --no-boundary-steiner
+expect 0 "comb with the quality pass" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/pass.vtu" --no-boundary-steiner
+contains "$work/out" "^post-pass .*quality pass on" "the quality pass runs by default"
+expect 64 "--no-quality-pass without --no-boundary-steiner" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/never_pass.vtu" --no-quality-pass
+[[ -e $work/never_pass.vtu ]] && fail "output written after a usage error" || ok
 expect 64 "--thesis-fans without --no-boundary-steiner" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/never_fans.vtu" --thesis-fans
 [[ -e $work/never_fans.vtu ]] && fail "output written after a usage error" || ok
 
