@@ -40,28 +40,8 @@ set -uo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 peers=$root/bench/peers2d
-pqmesh=${PQMESH_BIN:-build/bin/pqmesh}
-[[ $pqmesh == /* ]] || pqmesh=$root/$pqmesh
-
-target="" large_target=1000000 large=1 repeat=1 tsv="" keep=0 inputs=()
-while (($#)); do
-  case $1 in
-    --target) target=$2; shift 2 ;;
-    --large-target) large_target=$2; shift 2 ;;
-    --no-large) large=0; shift ;;
-    --repeat) repeat=$2; shift 2 ;;
-    --tsv) tsv=$2; shift 2 ;;
-    --keep) keep=1; shift ;;
-    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "run_2d.sh: unknown option $1" >&2; exit 2 ;;
-    *) [[ -f $1 ]] || { echo "run_2d.sh: no such input $1" >&2; exit 2; }
-       inputs+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
-  esac
-done
-((${#inputs[@]})) || inputs=("$root"/data/2d/*.poly)
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/pqmesh_bench2d.XXXXXX")
-if ((keep)); then echo "work directory: $work"; else trap 'rm -rf "$work"' EXIT; fi
+source "$root/bench/peer_cli.sh"  # peer_setup, peer_table
+peer_setup 2 "$@"  # pqmesh, the options, work
 
 # ---------------------------------------------------------------- tools
 # A python with meshio and numpy, for gmsh's .msh (Debian's python3-meshio
@@ -263,9 +243,5 @@ if ((large)); then
 fi
 
 header=$'tool\tinput\ttriangles\twall s\tmesh s\tpeak MiB\ttri/s\tB/tri\tmin angle\tnote'
-{
-  echo "$header"
-  printf '%s\n' "${rows[@]}"
-} | column -t -s $'\t'
-[[ -n $tsv ]] && { echo "$header"; printf '%s\n' "${rows[@]}"; } >"$tsv"
+peer_table "$header"
 exit 0

@@ -47,28 +47,8 @@ set -uo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 peers=$root/bench/peers3d
-pqmesh=${PQMESH_BIN:-build/bin/pqmesh}
-[[ $pqmesh == /* ]] || pqmesh=$root/$pqmesh
-
-target="" large_target=1000000 large=1 repeat=1 tsv="" keep=0 inputs=()
-while (($#)); do
-  case $1 in
-    --target) target=$2; shift 2 ;;
-    --large-target) large_target=$2; shift 2 ;;
-    --no-large) large=0; shift ;;
-    --repeat) repeat=$2; shift 2 ;;
-    --tsv) tsv=$2; shift 2 ;;
-    --keep) keep=1; shift ;;
-    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "run_3d.sh: unknown option $1" >&2; exit 2 ;;
-    *) [[ -f $1 ]] || { echo "run_3d.sh: no such input $1" >&2; exit 2; }
-       inputs+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
-  esac
-done
-((${#inputs[@]})) || inputs=("$root"/data/3d/*.poly)
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/pqmesh_bench3d.XXXXXX")
-if ((keep)); then echo "work directory: $work"; else trap 'rm -rf "$work"' EXIT; fi
+source "$root/bench/peer_cli.sh"  # peer_setup, peer_table
+peer_setup 3 "$@"  # pqmesh, the options, work
 
 have_time=0; [[ -x /usr/bin/time ]] && have_time=1
 have_pqmesh=0; [[ -x $pqmesh ]] && have_pqmesh=1
@@ -233,10 +213,4 @@ done
 ((large)) && run_all "plate_holes@${large_target}" "$root/data/3d/plate_holes.poly" "$large_target"
 
 header="tool	input	tets	wall s	peak MiB	tet/s	B/tet	min dih	max dih	max aspect	valid"
-{
-  echo "$header"
-  printf '%s\n' "${rows[@]}"
-} | column -t -s $'\t'
-if [[ -n $tsv ]]; then
-  { echo "$header"; printf '%s\n' "${rows[@]}"; } >"$tsv"
-fi
+peer_table "$header"

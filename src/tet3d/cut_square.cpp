@@ -114,14 +114,7 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
       out.push_back({p, q, pp});
     } else {
       // Quadrilateral p q qq pp, cut by the diagonal from its smallest key.
-      const std::array<int, 4> quad{p, q, qq, pp};
-      int lo = 0;
-      for (int m = 1; m < 4; ++m)
-        if (book.key(quad[static_cast<std::size_t>(m)]) < book.key(quad[static_cast<std::size_t>(lo)])) lo = m;
-      const int a = quad[static_cast<std::size_t>(lo)], b = quad[static_cast<std::size_t>((lo + 1) % 4)],
-                c = quad[static_cast<std::size_t>((lo + 2) % 4)], d = quad[static_cast<std::size_t>((lo + 3) % 4)];
-      out.push_back({a, b, c});
-      out.push_back({a, c, d});
+      append_quad_from_smallest_key(book, {p, q, qq, pp}, out);
     }
   }
   return CutCase::C2Outside;

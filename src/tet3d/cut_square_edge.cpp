@@ -370,13 +370,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
     } else if (qq == q) {
       out.push_back({p, q, pp});
     } else {
-      const std::array<int, 4> quad{p, q, qq, pp};
-      std::size_t lo_i = 0;
-      for (std::size_t a = 1; a < 4; ++a)
-        if (book.key(quad[a]) < book.key(quad[lo_i])) lo_i = a;
-      const int a = quad[lo_i], b = quad[(lo_i + 1) % 4], c = quad[(lo_i + 2) % 4], d = quad[(lo_i + 3) % 4];
-      out.push_back({a, b, c});
-      out.push_back({a, c, d});
+      append_quad_from_smallest_key(book, {p, q, qq, pp}, out);
     }
   }
   return EdgeCutCase::D2Outside;

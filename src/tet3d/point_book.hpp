@@ -7,6 +7,7 @@
 // names its moved copy, key (Warped, p, F) and the table's coordinates,
 // whichever call site asks (grid_vertex in warp.hpp does the same): a square
 // centre carried with its corners (warp.hpp) is one vertex on both sides.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -48,5 +49,20 @@ class PointBook {
   FirstUseIndex<VertexKey, VertexKeyHash> index_;
   std::vector<Vec3> points_;  // by id
 };
+
+// Appends quadrilateral (q0, q1, q2, q3) (cyclic) as two
+// triangles cut by the diagonal from its vertex of smallest key. Keys are the
+// same in every box, ids are not compared, so two boxes that build the same
+// quad (on a shared square) choose the same diagonal whatever corner they
+// list first; the triangles keep the quad's orientation.
+inline void append_quad_from_smallest_key(const PointBook& book, const std::array<int, 4>& quad,
+                                          std::vector<std::array<int, 3>>& out) {
+  std::size_t lo = 0;
+  for (std::size_t m = 1; m < 4; ++m)
+    if (book.key(quad[m]) < book.key(quad[lo])) lo = m;
+  const int a = quad[lo], b = quad[(lo + 1) % 4], c = quad[(lo + 2) % 4], d = quad[(lo + 3) % 4];
+  out.push_back({a, b, c});
+  out.push_back({a, c, d});
+}
 
 }  // namespace pqmesh::tet3d

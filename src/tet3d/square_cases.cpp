@@ -180,14 +180,7 @@ int SquareDispatcher::edge_for_square(int f, int g, const SquareGeometry& geo) c
 
 bool SquareDispatcher::facet_meets(int facet, const SquareGeometry& g) {
   // Cheap exact filter: S strictly on one side of the facet's plane.
-  const FacetPlane& pl = plane(facet);
-  int pos = 0, neg = 0;
-  for (const Vec3& c : g.corners) {
-    const Sign side = pl.side(c);
-    pos += side == Sign::Positive;
-    neg += side == Sign::Negative;
-  }
-  if (pos == 4 || neg == 4) return false;
+  if (!plane_meets(facet, g)) return false;
   const auto& pv = domain_.plc.vertices;
   for (const int t : facet_tris_[static_cast<std::size_t>(facet)]) {
     const auto& tri = domain_.facet_triangles[static_cast<std::size_t>(t)];
@@ -236,6 +229,8 @@ SquareDispatcher::Incidence SquareDispatcher::incidences(const FaceSquare& s, co
   return m;
 }
 
+// The closed square S meets the facet's plane: its four corners are not all
+// strictly on one side (exact orient3d through FacetPlane::side).
 bool SquareDispatcher::plane_meets(int facet, const SquareGeometry& g) {
   const FacetPlane& pl = plane(facet);
   int pos = 0, neg = 0;
@@ -272,6 +267,20 @@ bool SquareDispatcher::half_plane_meets(const EdgeCone& ec, int facet, const Squ
   return false;
 }
 
+// F's edges at P vertex v, in vertex_edges(v) order: the first two and how
+// many there are. A vertex of F has exactly two on a valid PLC (F's boundary
+// passes v once); callers decide what another count means.
+SquareDispatcher::FacetEdgesAt SquareDispatcher::facet_edges_at(int vertex, int facet) const {
+  FacetEdgesAt at;
+  for (const int x : vertex_edges(vertex)) {
+    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(x)];
+    if (de.facets[0] != facet && de.facets[1] != facet) continue;
+    if (at.count < 2) at.edges[static_cast<std::size_t>(at.count)] = x;
+    ++at.count;
+  }
+  return at;
+}
+
 // The sector of facet F at P vertex v: the part of F's plane on F's side of
 // both lines of F's edges e1, e2 at v (H1 ∩ H2, F's angle at v below 180°),
 // of either (H1 ∪ H2, above 180°), or H1 (= H2, exactly 180°); H_i is where
@@ -292,17 +301,11 @@ bool SquareDispatcher::half_plane_meets(const EdgeCone& ec, int facet, const Squ
 // G_1's sign could not change along σ; c = v_n: x1 = v). In a united box v
 // is strictly inside B, so c != v_n there.
 bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry& g) {
-  std::array<int, 2> e{-1, -1};
-  int found = 0;
-  for (const int x : vertex_edges(vertex)) {
-    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(x)];
-    if (de.facets[0] != facet && de.facets[1] != facet) continue;
-    if (found < 2) e[static_cast<std::size_t>(found)] = x;
-    ++found;
-  }
-  if (found != 2)
-    throw InternalError("tet3d: facet " + std::to_string(facet) + " has " + std::to_string(found) + " edges at vertex " +
-                        std::to_string(vertex) + " (a vertex box needs two)");
+  const FacetEdgesAt at = facet_edges_at(vertex, facet);
+  if (at.count != 2)
+    throw InternalError("tet3d: facet " + std::to_string(facet) + " has " + std::to_string(at.count) +
+                        " edges at vertex " + std::to_string(vertex) + " (a vertex box needs two)");
+  const std::array<int, 2>& e = at.edges;
   const FacetPlane& fp = plane(facet);
   std::array<const EdgeCone*, 2> ec{&cone(e[0]), &cone(e[1])};
   std::array<const FacetPlane*, 2> gp{};
@@ -363,15 +366,9 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
 // edge's other facet G1 that is not P's side of F's part of dP (the test of
 // sector_meets, exact orient3d).
 bool SquareDispatcher::reflex_at(int vertex, int facet) {
-  std::array<int, 2> e{-1, -1};
-  int found = 0;
-  for (const int x : vertex_edges(vertex)) {
-    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(x)];
-    if (de.facets[0] != facet && de.facets[1] != facet) continue;
-    if (found < 2) e[static_cast<std::size_t>(found)] = x;
-    ++found;
-  }
-  if (found != 2) return false;
+  const FacetEdgesAt at = facet_edges_at(vertex, facet);
+  if (at.count != 2) return false;
+  const std::array<int, 2>& e = at.edges;
   const EdgeCone& c1 = cone(e[0]);
   const FacetPlane& g1 = c1.f().facet() == facet ? c1.g() : c1.f();
   const DomainEdge& d2 = domain_.edges[static_cast<std::size_t>(e[1])];

@@ -145,6 +145,13 @@ class SquareDispatcher {
   bool facet_meets(int facet, const SquareGeometry& g);
   bool plane_meets(int facet, const SquareGeometry& g);
   bool half_plane_meets(const EdgeCone& cone, int facet, const SquareGeometry& g);
+  // Facet F's edges at P vertex v (vertex_edges order): the first two, and
+  // how many F has there (two on a valid PLC).
+  struct FacetEdgesAt {
+    std::array<int, 2> edges{-1, -1};
+    int count = 0;
+  };
+  FacetEdgesAt facet_edges_at(int vertex, int facet) const;
   bool sector_meets(int vertex, int facet, const SquareGeometry& g);
   bool reflex_at(int vertex, int facet);
   bool separate_edge_pieces(int vertex, const Incidence& m);

@@ -28,6 +28,19 @@ inline Plc3 box(Vec3 lo = {0, 0, 0}, Vec3 hi = {1, 1, 1}) {
   return plc;
 }
 
+// The unit cube with its bottom split along the diagonal (0, 2) into two
+// triangles: facets 0 = (0, 3, 2) and 1 = (0, 2, 1), then top, front, right,
+// back, left. Facet k has marker k, so make_domain keeps the coplanar halves
+// apart and the edge (0, 2) between them is flat (unsupported input).
+inline Plc3 cube_with_split_bottom() {
+  Plc3 plc;
+  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const std::vector<std::vector<int>> loops = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (std::size_t k = 0; k < loops.size(); ++k) plc.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k)});
+  return plc;
+}
+
 // A box with every facet listed inside out (cavity orientation).
 inline void add_inverted_box(Plc3& plc, Vec3 lo, Vec3 hi) {
   const std::size_t first = plc.facets.size();
@@ -38,13 +51,15 @@ inline void add_inverted_box(Plc3& plc, Vec3 lo, Vec3 hi) {
   }
 }
 
-// Prism over a counter-clockwise polygon (x, y) from z = 0 to z = h.
-// Facets: 0 bottom, 1 top, then side k over polygon edge k -> k+1.
-inline Plc3 prism(const std::vector<Vec2>& poly, double h) {
+// Prism over a counter-clockwise polygon (x, y) from z = z0 to z = z1 > z0.
+// Vertices: k (z0) and n + k (z1) over polygon vertex k. Facets: 0 bottom,
+// 1 top, then side k over polygon edge k -> k+1 (planar exactly: two points
+// repeated at two heights).
+inline Plc3 prism(const std::vector<Vec2>& poly, double z0, double z1) {
   Plc3 plc;
   const int n = static_cast<int>(poly.size());
-  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, 0});
-  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, h});
+  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, z0});
+  for (const auto& p : poly) plc.vertices.push_back({p.x, p.y, z1});
   Facet3 bottom, top;
   bottom.loops.emplace_back();
   top.loops.emplace_back();
@@ -58,6 +73,9 @@ inline Plc3 prism(const std::vector<Vec2>& poly, double h) {
   }
   return plc;
 }
+
+// The prism from z = 0 to z = h.
+inline Plc3 prism(const std::vector<Vec2>& poly, double h) { return prism(poly, 0, h); }
 
 // L-shaped prism: the L = [0,2]x[0,1] u [0,1]x[0,2], height 1 (volume 3).
 inline Plc3 l_block() { return prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1); }

@@ -5,35 +5,17 @@
 // zero), the same a grid unit or an ulp off, full-precision points near a right
 // angle (inexact differences: the 8/12-product form), wide scales, and the
 // range guards. The whole predicates are checked against the oracle too.
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
 
+#include "gmp_oracle.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
 namespace {
-
-mpq_class q(double v) { return mpq_class(v); }
-
-Sign dot_oracle(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  return static_cast<Sign>(sgn((q(b.x) - q(a.x)) * (q(d.x) - q(c.x)) + (q(b.y) - q(a.y)) * (q(d.y) - q(c.y)) +
-                               (q(b.z) - q(a.z)) * (q(d.z) - q(c.z))));
-}
-
-Sign dot_oracle(Vec2 a, Vec2 b, Vec2 c) {
-  return static_cast<Sign>(sgn((q(b.x) - q(a.x)) * (q(c.x) - q(a.x)) + (q(b.y) - q(a.y)) * (q(c.y) - q(a.y))));
-}
-
-Sign orient3d_oracle(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const mpq_class ux = q(b.x) - q(a.x), uy = q(b.y) - q(a.y), uz = q(b.z) - q(a.z);
-  const mpq_class vx = q(c.x) - q(a.x), vy = q(c.y) - q(a.y), vz = q(c.z) - q(a.z);
-  const mpq_class wx = q(d.x) - q(a.x), wy = q(d.y) - q(a.y), wz = q(d.z) - q(a.z);
-  return static_cast<Sign>(sgn(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)));
-}
 
 struct Tally {
   int positive = 0, zero = 0, negative = 0;
@@ -49,7 +31,7 @@ struct Tally {
 Sign checked_dot(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   Sign s = Sign::Zero;
   EXPECT_TRUE(detail::dot_sign_expansion(a, b, c, d, s));
-  const Sign o = dot_oracle(a, b, c, d);
+  const Sign o = test::dot_oracle(a, b, c, d);
   EXPECT_EQ(s, o);
   EXPECT_EQ(dot_sign(a, b, c, d), o);
   return o;
@@ -58,7 +40,7 @@ Sign checked_dot(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 Sign checked_dot(Vec2 a, Vec2 b, Vec2 c) {
   Sign s = Sign::Zero;
   EXPECT_TRUE(detail::dot_sign_expansion(a, b, c, s));
-  const Sign o = dot_oracle(a, b, c);
+  const Sign o = test::dot_oracle(a, b, c);
   EXPECT_EQ(s, o);
   EXPECT_EQ(dot_sign(a, b, c), o);
   return o;
@@ -170,7 +152,7 @@ Sign checked_orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d, bool must_answer) {
   if (must_answer) {
     EXPECT_TRUE(answered);
   }
-  const Sign o = orient3d_oracle(a, b, c, d);
+  const Sign o = test::orient3d_oracle(a, b, c, d);
   if (answered) {
     EXPECT_EQ(s, o);
   }
@@ -240,7 +222,7 @@ TEST(Orient3dExpansion, RangeGuardAndInexactDifferences) {
   const Vec3 a{-0x1.bb8p-1, -0x1p-1, 0}, b{-0x1p-1, -0x1.bb8p-1, 0}, c{0, 0, 1};
   const Vec3 d{-0x1.4a9bbcdcbfa4fp-1, -0x1.70e44323405b1p-1, -0x1p-1074};
   EXPECT_FALSE(detail::orient3d_expansion(a, b, c, d, s));
-  EXPECT_EQ(orient3d(a, b, c, d), orient3d_oracle(a, b, c, d));
+  EXPECT_EQ(orient3d(a, b, c, d), test::orient3d_oracle(a, b, c, d));
   // 0.1 - 1e-30 is not exact: declined.
   EXPECT_FALSE(detail::orient3d_expansion(Vec3{1e-30, 0, 0}, Vec3{0.1, 0, 0}, y, Vec3{0, 0, 1}, s));
 }

@@ -4,30 +4,24 @@
 // the certified stage cannot decide those), exactly collinear points built by
 // construction, and random points at widely different scales. Also checks its
 // range guard and that orient2d as a whole agrees with the oracle.
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
 
+#include "gmp_oracle.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
 namespace {
-
-Sign oracle(Vec2 a, Vec2 b, Vec2 c) {
-  const mpq_class acx = mpq_class(a.x) - mpq_class(c.x), bcx = mpq_class(b.x) - mpq_class(c.x);
-  const mpq_class acy = mpq_class(a.y) - mpq_class(c.y), bcy = mpq_class(b.y) - mpq_class(c.y);
-  return static_cast<Sign>(sgn(acx * bcy - acy * bcx));
-}
 
 // Checks the stage (it must answer: every input here is in its range) and the
 // whole predicate against the oracle; returns the sign.
 Sign checked(Vec2 a, Vec2 b, Vec2 c) {
   Sign s = Sign::Zero;
   EXPECT_TRUE(detail::orient2d_expansion(a, b, c, s));
-  const Sign o = oracle(a, b, c);
+  const Sign o = test::orient2d_oracle(a, b, c);
   EXPECT_EQ(s, o) << a.x << ' ' << a.y << ' ' << b.x << ' ' << b.y << ' ' << c.x << ' ' << c.y;
   EXPECT_EQ(orient2d(a, b, c), o);
   return o;
@@ -115,7 +109,7 @@ TEST(ExpansionStage, RangeGuard) {
   // ulp box of a point on the x axis (a corner a subnormal below 0) against
   // that axis, the case the quadtree mesher meets.
   EXPECT_TRUE(detail::orient2d_expansion({0x1p900, 0x1p-900}, {0x1p901, 0}, {0, 0x1p-899}, s));
-  EXPECT_EQ(s, oracle({0x1p900, 0x1p-900}, {0x1p901, 0}, {0, 0x1p-899}));
+  EXPECT_EQ(s, test::orient2d_oracle({0x1p900, 0x1p-900}, {0x1p901, 0}, {0, 0x1p-899}));
   EXPECT_TRUE(detail::orient2d_expansion({0, 0}, {1, 0}, {0.0039, -tiny}, s));
   EXPECT_EQ(s, Sign::Negative);
   EXPECT_TRUE(detail::orient2d_expansion({0, 0}, {1, 0}, {0.0039, tiny}, s));
@@ -126,7 +120,7 @@ TEST(ExpansionStage, RangeGuard) {
   const Vec2 a{0x1p-500, 0x1p-500}, b{1, 1};
   EXPECT_EQ(orient2d(a, b, {0.5, 0.5}), Sign::Zero);
   const Vec2 c{0.5, std::nextafter(0.5, 1.0)};
-  EXPECT_EQ(orient2d(a, b, c), oracle(a, b, c));
+  EXPECT_EQ(orient2d(a, b, c), test::orient2d_oracle(a, b, c));
 }
 
 }  // namespace

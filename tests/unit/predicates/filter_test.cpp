@@ -2,7 +2,6 @@
 // detail::filtered_sign): a sign only when it is certain, silence otherwise;
 // and incircle, which uses it, against an independent GMP oracle on clear,
 // near-cocircular and exactly cocircular inputs.
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,18 +10,11 @@
 #include <optional>
 #include <random>
 
+#include "gmp_oracle.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
 namespace {
-
-Sign incircle_oracle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const auto q = [](double v) { return mpq_class(v); };
-  const mpq_class ax = q(a.x) - q(d.x), ay = q(a.y) - q(d.y), bx = q(b.x) - q(d.x), by = q(b.y) - q(d.y);
-  const mpq_class cx = q(c.x) - q(d.x), cy = q(c.y) - q(d.y);
-  const mpq_class al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;
-  return static_cast<Sign>(sgn(al * (bx * cy - by * cx) + bl * (cx * ay - cy * ax) + cl * (ax * by - ay * bx)));
-}
 
 // Sign the filter reports, or nullopt when it stays silent (the sign is
 // preset, to see that a silent filter leaves it untouched).
@@ -69,7 +61,7 @@ TEST(IncircleWithSharedFilter, ExactOnTiesNearTiesAndClearCases) {
       const double t = coord(rng) * 3.14159;
       for (int k = 0; k < 4; ++k) p[k] = {0.1 + 0.7 * std::cos(t + 1.5 * k), -0.2 + 0.7 * std::sin(t + 1.5 * k)};
     }
-    const Sign exact = incircle_oracle(p[0], p[1], p[2], p[3]);
+    const Sign exact = test::incircle_oracle(p[0], p[1], p[2], p[3]);
     nonzero += exact != Sign::Zero;
     ASSERT_EQ(incircle(p[0], p[1], p[2], p[3]), exact) << "trial " << trial;
   }

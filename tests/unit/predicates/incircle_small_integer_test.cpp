@@ -3,25 +3,17 @@
 // answer on nearby dyadic grid points (the quadtree's cocircular corners) and
 // give the exact sign, and refuse when the differences need more than 12
 // bits or are inexact.
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <random>
 
+#include "gmp_oracle.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {
 namespace {
-
-Sign oracle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const auto q = [](double v) { return mpq_class(v); };
-  const mpq_class ax = q(a.x) - q(d.x), ay = q(a.y) - q(d.y), bx = q(b.x) - q(d.x), by = q(b.y) - q(d.y);
-  const mpq_class cx = q(c.x) - q(d.x), cy = q(c.y) - q(d.y);
-  const mpq_class al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;
-  return static_cast<Sign>(sgn(al * (bx * cy - by * cx) + bl * (cx * ay - cy * ax) + cl * (ax * by - ay * bx)));
-}
 
 TEST(IncircleSmallInteger, GridPointsAnswerExactly) {
   std::mt19937_64 rng(31);
@@ -38,7 +30,7 @@ TEST(IncircleSmallInteger, GridPointsAnswerExactly) {
            oy + static_cast<double>(rng() % static_cast<std::uint64_t>(range)) * unit};
     Sign s = Sign::Zero;
     const bool ok = detail::incircle_small_integer(p[0], p[1], p[2], p[3], s);
-    const Sign o = oracle(p[0], p[1], p[2], p[3]);
+    const Sign o = test::incircle_oracle(p[0], p[1], p[2], p[3]);
     if (ok) {
       ++answered;
       EXPECT_EQ(s, o) << "trial " << trial;
@@ -55,7 +47,7 @@ TEST(IncircleSmallInteger, RefusesWideOrInexactDifferences) {
   // 13 bits: 4096 units apart.
   EXPECT_FALSE(detail::incircle_small_integer({4096, 0}, {0, 1}, {-1, 0}, {0, 0}, s));
   EXPECT_TRUE(detail::incircle_small_integer({2047, 0}, {0, 1}, {-1, 0}, {0, 0}, s));
-  EXPECT_EQ(s, oracle({2047, 0}, {0, 1}, {-1, 0}, {0, 0}));
+  EXPECT_EQ(s, test::incircle_oracle({2047, 0}, {0, 1}, {-1, 0}, {0, 0}));
   // Full-precision coordinates: many bits.
   EXPECT_FALSE(detail::incircle_small_integer({0.1, 0}, {0, 0.3}, {-0.7, 0}, {0, 0}, s));
   // An inexact difference (1 - 2^-60 rounds).

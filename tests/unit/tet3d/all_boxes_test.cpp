@@ -22,10 +22,12 @@
 #include <string>
 #include <tuple>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
@@ -137,6 +139,18 @@ std::int64_t squares_agree(const mv3d::OctreeBuilder& b, const CornerSet& corner
   return compared;
 }
 
+// The polygon `pts`, centred on its a x b bounding box, rotated by `angle`
+// about z and moved to (cx, cy).
+template <std::size_t N>
+std::vector<Vec2> rotated(const double (&pts)[N][2], double a, double b, double angle, double cx, double cy) {
+  std::vector<Vec2> out;
+  for (const auto& p : pts) {
+    const double x = p[0] - a / 2, y = p[1] - b / 2;
+    out.push_back({cx + std::cos(angle) * x - std::sin(angle) * y, cy + std::sin(angle) * x + std::cos(angle) * y});
+  }
+  return out;
+}
+
 // A prism over an L-shaped polygon (random arm lengths and widths, rotated
 // by a random angle about z, random z range): nonconvex, one reflex edge.
 // Vertical sides are planar exactly (two points repeated at two heights).
@@ -146,23 +160,7 @@ Plc3 random_l_prism(std::mt19937_64& rng) {
   const double angle = 6.283185307179586 * u(rng);
   const double cx = 0.45 + 0.1 * u(rng), cy = 0.45 + 0.1 * u(rng), z0 = 0.2 + 0.1 * u(rng), z1 = 0.7 + 0.1 * u(rng);
   const double l[6][2] = {{0, 0}, {a, 0}, {a, t}, {w, t}, {w, b}, {0, b}};
-  Plc3 plc;
-  for (const double z : {z0, z1})
-    for (const auto& p : l) {
-      const double x = p[0] - a / 2, y = p[1] - b / 2;
-      plc.vertices.push_back(
-          {cx + std::cos(angle) * x - std::sin(angle) * y, cy + std::sin(angle) * x + std::cos(angle) * y, z});
-    }
-  Facet3 bottom, top;
-  bottom.loops = {{5, 4, 3, 2, 1, 0}};
-  top.loops = {{6, 7, 8, 9, 10, 11}};
-  plc.facets = {bottom, top};
-  for (int i = 0; i < 6; ++i) {
-    Facet3 f;
-    f.loops = {{i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i}};
-    plc.facets.push_back(f);
-  }
-  return plc;
+  return test::prism(rotated(l, a, b, angle, cx, cy), z0, z1);
 }
 
 // A prism over a square-ish polygon with a narrow V notch (a reflex edge of
@@ -176,23 +174,7 @@ Plc3 random_notch_prism(std::mt19937_64& rng) {
   const double angle = 6.283185307179586 * u(rng);
   const double cx = 0.45 + 0.1 * u(rng), cy = 0.45 + 0.1 * u(rng), z0 = 0.2 + 0.1 * u(rng), z1 = 0.7 + 0.1 * u(rng);
   const double l[7][2] = {{0, 0}, {a, 0}, {a, b}, {a / 2 + e, b}, {a / 2 + 0.01 * u(rng), t}, {a / 2 - e, b}, {0, b}};
-  Plc3 plc;
-  for (const double z : {z0, z1})
-    for (const auto& p : l) {
-      const double x = p[0] - a / 2, y = p[1] - b / 2;
-      plc.vertices.push_back(
-          {cx + std::cos(angle) * x - std::sin(angle) * y, cy + std::sin(angle) * x + std::cos(angle) * y, z});
-    }
-  Facet3 bottom, top;
-  bottom.loops = {{6, 5, 4, 3, 2, 1, 0}};
-  top.loops = {{7, 8, 9, 10, 11, 12, 13}};
-  plc.facets = {bottom, top};
-  for (int i = 0; i < 7; ++i) {
-    Facet3 f;
-    f.loops = {{i, (i + 1) % 7, 7 + (i + 1) % 7, 7 + i}};
-    plc.facets.push_back(f);
-  }
-  return plc;
+  return test::prism(rotated(l, a, b, angle, cx, cy), z0, z1);
 }
 
 // Worst shapes per box kind (empty, facet, edge, vertex, two-facet).
@@ -413,16 +395,24 @@ void expect_warp_floors(const Totals& t) {
   EXPECT_LE(t.kinds.aspect[2], 1600.0) << "worst edge-box aspect ratio";
 }
 
-TEST_P(AllBoxes, RandomTetrahedra) {
-  std::mt19937_64 rng(20261130);
+// Meshes `count` domains drawn in turn from one random stream (make(rng)),
+// prints their totals under `title` and checks the warping floors.
+template <class MakePlc>
+Totals mesh_stream(std::uint64_t stream, int count, bool warp, const char* what, const char* title, MakePlc make) {
+  std::mt19937_64 rng(stream);
   Totals t;
-  t.warp = GetParam();
-  for (int seed = 0; seed < 8; ++seed) {
-    const Domain3 d = make_domain(random_tetrahedron(rng));
-    mesh_whole(d, "tetrahedron", seed, t);
+  t.warp = warp;
+  for (int seed = 0; seed < count; ++seed) {
+    const Domain3 d = make_domain(make(rng));
+    mesh_whole(d, what, seed, t);
   }
-  print("random tetrahedra", t);
+  print(title, t);
   expect_warp_floors(t);
+  return t;
+}
+
+TEST_P(AllBoxes, RandomTetrahedra) {
+  const Totals t = mesh_stream(20261130, 8, GetParam(), "tetrahedron", "random tetrahedra", random_tetrahedron);
   EXPECT_GE(t.meshed, 6);
   EXPECT_GT(t.s.edge, 0);
   // Some edge box takes a point of E other than the midpoint (both runs).
@@ -431,28 +421,12 @@ TEST_P(AllBoxes, RandomTetrahedra) {
 }
 
 TEST_P(AllBoxes, RandomStarPolyhedra) {
-  std::mt19937_64 rng(77);
-  Totals t;
-  t.warp = GetParam();
-  for (int seed = 0; seed < 2; ++seed) {
-    const Domain3 d = make_domain(random_star(rng));
-    mesh_whole(d, "star", seed, t);
-  }
-  print("random star polyhedra", t);
-  expect_warp_floors(t);
+  const Totals t = mesh_stream(77, 2, GetParam(), "star", "random star polyhedra", random_star);
   EXPECT_GE(t.meshed, 1);
 }
 
 TEST_P(AllBoxes, RandomLPrisms) {
-  std::mt19937_64 rng(5);
-  Totals t;
-  t.warp = GetParam();
-  for (int seed = 0; seed < 3; ++seed) {
-    const Domain3 d = make_domain(random_l_prism(rng));
-    mesh_whole(d, "L-prism", seed, t);
-  }
-  print("random L-prisms", t);
-  expect_warp_floors(t);
+  const Totals t = mesh_stream(5, 3, GetParam(), "L-prism", "random L-prisms", random_l_prism);
   EXPECT_GE(t.meshed, 2);
   EXPECT_GT(t.duplicates, 0);  // duplicated cubes occur (each component meshed on its own)
   EXPECT_GT(t.s.two_facet, 0);

@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
@@ -20,19 +21,6 @@
 
 namespace pqmesh::tet3d {
 namespace {
-
-// The cube [0, s]^3 as a validated domain (outward facets).
-Domain3 cube_domain(double s) {
-  Plc3 plc;
-  for (int k = 0; k < 8; ++k) plc.vertices.push_back({(k & 1) ? s : 0, (k & 2) ? s : 0, (k & 4) ? s : 0});
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    Facet3 f;
-    f.loops.push_back({q[0], q[1], q[2], q[3]});
-    plc.facets.push_back(f);
-  }
-  return make_domain(plc);
-}
 
 OctTree unit_tree() { return OctTree(RootCube<3>{{0, 0, 0}, 1}); }
 
@@ -48,7 +36,7 @@ TEST(BoxFaces, SingleCubeIsCoupledFromCentreToFaceCentres) {
   const BoxMesh m = mesh_empty_boxes(t, corners, leaves);
   EXPECT_EQ(m.mesh.tetrahedra.size(), 24u);
   EXPECT_EQ(m.mesh.vertices.size(), 15u);
-  const CheckReport r = check_mesh(m.mesh, cube_domain(1));
+  const CheckReport r = check_mesh(m.mesh, make_domain(test::box()));
   EXPECT_TRUE(r.valid()) << r.to_text();
 }
 
@@ -77,7 +65,7 @@ TEST(BoxFaces, FaceNextToSmallerBoxesIsSplitIntoTheirSquares) {
   triangulate_box_face(t.key(first + 1), 1, false, corners, tris);
   EXPECT_EQ(tris.size(), 5u);
   const BoxMesh m = mesh_empty_boxes(t, corners, leaves);
-  const CheckReport r = check_mesh(m.mesh, cube_domain(1));
+  const CheckReport r = check_mesh(m.mesh, make_domain(test::box()));
   EXPECT_TRUE(r.valid()) << r.to_text();
 }
 
@@ -103,7 +91,7 @@ TEST(BoxFaces, RandomTreesTileTheRootCube) {
       for (const std::int32_t n : leaves)
         for (const std::int32_t m : t.neighbours(n)) max_jump = std::max(max_jump, t.level(m) - t.level(n));
       const BoxMesh m = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
-      const CheckReport r = check_mesh(m.mesh, cube_domain(1));
+      const CheckReport r = check_mesh(m.mesh, make_domain(test::box()));
       ASSERT_TRUE(r.valid()) << "seed " << seed << (balanced ? " balanced\n" : " unbalanced\n") << r.to_text();
       // Vertex identity is the grid key: no two vertices share a key.
       ASSERT_EQ(std::set<VertexKey>(m.keys.begin(), m.keys.end()).size(), m.keys.size());

@@ -24,15 +24,17 @@
 #include <random>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
+#include "square_test_util.hpp"
 #include "tet3d/cut_square_edge.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
 
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
+using test::coord;
 
 struct Wedge {
   Domain3 domain;
@@ -129,12 +131,7 @@ TEST(CutSquareEdge, RandomEdgesThroughRandomTrees) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (std::uint64_t seed = 1; seed <= 16; ++seed) {
     std::mt19937_64 rng(seed);
-    OctTree t(RootCube<3>{{0, 0, 0}, 1});
-    for (int i = 0; i < 30; ++i) {
-      const std::vector<std::int32_t> leaves = t.leaves();
-      const std::int32_t n = leaves[static_cast<std::size_t>(rng() % leaves.size())];
-      if (t.level(n) < 5) t.split(n);
-    }
+    const OctTree t = test::random_tree(rng);
     const std::vector<std::int32_t> leaves = t.leaves();
     const CornerSet corners(t, leaves);
     std::vector<FaceSquare> squares;
@@ -179,13 +176,7 @@ TEST(CutSquareEdge, RandomEdgesThroughRandomTrees) {
         triangulate_edge_square(s, corners, t, cone, book, again);
         EXPECT_EQ(tris, again);
         EXPECT_EQ(book.size(), before);
-        std::array<Vec3, 4> sq;
-        for (int k = 0; k < 4; ++k) {
-          GridPoint g = s.lo;
-          g.f[s.u] += (k == 1 || k == 2) ? s.side : 0;
-          g.f[s.v] += (k >= 2) ? s.side : 0;
-          sq[static_cast<std::size_t>(k)] = grid_coordinates(t, g);
-        }
+        const std::array<Vec3, 4> sq = test::square_corners(t, s);
         double got = 0;
         for (const auto& tri : tris) {
           const Vec3 p0 = book.point(tri[0]), p1 = book.point(tri[1]), p2 = book.point(tri[2]);
@@ -193,9 +184,7 @@ TEST(CutSquareEdge, RandomEdgesThroughRandomTrees) {
               << "seed " << seed << " edge " << edge << " case " << static_cast<int>(cc);
           for (const int id : tri) {
             const Vec3 x = book.point(id);
-            EXPECT_EQ(coord(x, s.n), coord(sq[0], s.n));
-            EXPECT_TRUE(coord(x, s.u) >= coord(sq[0], s.u) && coord(x, s.u) <= coord(sq[2], s.u));
-            EXPECT_TRUE(coord(x, s.v) >= coord(sq[0], s.v) && coord(x, s.v) <= coord(sq[2], s.v));
+            EXPECT_TRUE(test::on_closed_square(x, sq, s)) << "seed " << seed << " edge " << edge;
             const Sign xf = orient3d(tf[0], tf[1], tf[2], x), xg = orient3d(tg[0], tg[1], tg[2], x);
             const bool inside =
                 convex ? (xf != Sign::Positive && xg != Sign::Positive) : (xf != Sign::Positive || xg != Sign::Positive);
@@ -206,7 +195,7 @@ TEST(CutSquareEdge, RandomEdgesThroughRandomTrees) {
               EXPECT_TRUE(within_ulp_of_segment(x, a, b));
             }
           }
-          got += 0.5 * (coord(p1 - p0, s.u) * coord(p2 - p0, s.v) - coord(p2 - p0, s.u) * coord(p1 - p0, s.v));
+          got += test::uv_area(p0, p1, p2, s.u, s.v);
         }
         const std::vector<GridPoint> ring = square_ring(s, corners);
         for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -274,16 +263,11 @@ TEST(CutSquareEdge, ConeSignsByHand) {
   }
 }
 
-// The unit cube with its bottom split along the diagonal (0, 2) into two
-// triangles with different markers (so make_domain keeps them apart): the
-// edge (0, 2) is flat, which the cone refuses as unsupported input.
+// The unit cube with its bottom split along the diagonal (0, 2)
+// (test::cube_with_split_bottom): the edge (0, 2) is flat, which the cone
+// refuses as unsupported input.
 TEST(CutSquareEdge, AFlatEdgeIsUnsupportedInput) {
-  Plc3 plc;
-  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const std::vector<std::vector<int>> loops = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  for (std::size_t k = 0; k < loops.size(); ++k) plc.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k)});
-  const Domain3 d = make_domain(plc);
+  const Domain3 d = make_domain(test::cube_with_split_bottom());
   int flat = -1, crease = -1;
   for (std::size_t e = 0; e < d.edges.size(); ++e) {
     if (d.edges[e].a == 0 && d.edges[e].b == 2) flat = static_cast<int>(e);

@@ -20,12 +20,13 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 #include "predicates/predicates.hpp"
+#include "square_test_util.hpp"
 #include "tet3d/cut_square.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
 
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
+using test::coord;
 
 // A large tetrahedron whose facet 0 spans the plane through a, b, c (with P
 // on the side of `inside`).
@@ -69,12 +70,7 @@ TEST(CutSquare, RandomFacetsThroughRandomTrees) {
   std::map<CutCase, int> cases;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     std::mt19937_64 rng(seed);
-    OctTree t(RootCube<3>{{0, 0, 0}, 1});
-    for (int i = 0; i < 30; ++i) {
-      const std::vector<std::int32_t> leaves = t.leaves();
-      const std::int32_t n = leaves[static_cast<std::size_t>(rng() % leaves.size())];
-      if (t.level(n) < 5) t.split(n);
-    }
+    const OctTree t = test::random_tree(rng);
     const std::vector<std::int32_t> leaves = t.leaves();
     const CornerSet corners(t, leaves);
     const Vec3 a{dyadic(rng, -0.5, 1.5), dyadic(rng, -0.5, 1.5), dyadic(rng, -1, 0.2)};
@@ -107,25 +103,17 @@ TEST(CutSquare, RandomFacetsThroughRandomTrees) {
             triangulate_cut_square(s, corners, t, plane, book, again);
             EXPECT_EQ(tris, again);
             EXPECT_EQ(book.size(), before);
-            std::array<Vec3, 4> q;
-            for (int k = 0; k < 4; ++k) {
-              GridPoint g = s.lo;
-              g.f[s.u] += (k == 1 || k == 2) ? s.side : 0;
-              g.f[s.v] += (k >= 2) ? s.side : 0;
-              q[static_cast<std::size_t>(k)] = grid_coordinates(t, g);
-            }
+            const std::array<Vec3, 4> q = test::square_corners(t, s);
             double area = 0;
             for (const auto& tri : tris) {
               const Vec3 p0 = book.point(tri[0]), p1 = book.point(tri[1]), p2 = book.point(tri[2]);
               EXPECT_EQ(orient2d_projected(p0, p1, p2, s.n), Sign::Positive) << "seed " << seed;
               for (const int id : tri) {
                 const Vec3 p = book.point(id);
-                EXPECT_EQ(coord(p, s.n), coord(q[0], s.n));
-                EXPECT_TRUE(coord(p, s.u) >= coord(q[0], s.u) && coord(p, s.u) <= coord(q[2], s.u));
-                EXPECT_TRUE(coord(p, s.v) >= coord(q[0], s.v) && coord(p, s.v) <= coord(q[2], s.v));
+                EXPECT_TRUE(test::on_closed_square(p, q, s)) << "seed " << seed;
                 EXPECT_TRUE(plane.side(p) != Sign::Positive || within_ulp_of_plane(p, a, b, c)) << "seed " << seed;
               }
-              area += 0.5 * (coord(p1 - p0, s.u) * coord(p2 - p0, s.v) - coord(p2 - p0, s.u) * coord(p1 - p0, s.v));
+              area += test::uv_area(p0, p1, p2, s.u, s.v);
             }
             const double expected = clipped_area(q, plane, s.u, s.v);
             EXPECT_NEAR(area, expected, 1e-9 * coord(q[2] - q[0], s.u) * coord(q[2] - q[0], s.u)) << "seed " << seed;

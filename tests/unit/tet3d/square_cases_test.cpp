@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
 #include "pqmesh/plc.hpp"
@@ -214,12 +215,7 @@ TEST(SquareCases, FacetsSharingCollinearEdgesUseTheEdgeThatCrossesTheSquare) {
 TEST(SquareCases, RefusesAFlatEdgeAsUnsupportedInput) {
   Fixture fx;
   const CornerSet corners(fx.tree, fx.leaves);
-  Plc3 plc;
-  plc.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const std::vector<std::vector<int>> loops = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  for (std::size_t k = 0; k < loops.size(); ++k) plc.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k)});
-  const Domain3 d = make_domain(plc);
+  const Domain3 d = make_domain(test::cube_with_split_bottom());
   ASSERT_EQ(d.plc.facets.size(), 7u);  // different markers: the bottom halves stay apart
   PointBook book;
   try {

@@ -12,6 +12,7 @@
 
 #include <string>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/tetmesh.hpp"
@@ -24,22 +25,14 @@ namespace {
 // 11 (top), mouth half-width half_mouth at y = 0.97. Non-dyadic coordinates
 // (general position with respect to the generic grid).
 Plc3 notch_prism(double tip_x, double tip_y, double half_mouth) {
-  const double pts[7][2] = {{0.03, 0.02},  {0.97, 0.04},          {0.98, 0.96},
-                            {tip_x + half_mouth, 0.97}, {tip_x, tip_y}, {tip_x - half_mouth, 0.97},
-                            {0.01, 0.95}};
-  Plc3 plc;
-  for (const double z : {0.013, 0.311})
-    for (const auto& p : pts) plc.vertices.push_back({p[0], p[1], z});
-  Facet3 bottom, top;
-  bottom.loops = {{6, 5, 4, 3, 2, 1, 0}};
-  top.loops = {{7, 8, 9, 10, 11, 12, 13}};
-  plc.facets = {bottom, top};
-  for (int i = 0; i < 7; ++i) {
-    Facet3 f;
-    f.loops = {{i, (i + 1) % 7, 7 + (i + 1) % 7, 7 + i}};
-    plc.facets.push_back(f);
-  }
-  return plc;
+  return test::prism({{0.03, 0.02},
+                      {0.97, 0.04},
+                      {0.98, 0.96},
+                      {tip_x + half_mouth, 0.97},
+                      {tip_x, tip_y},
+                      {tip_x - half_mouth, 0.97},
+                      {0.01, 0.95}},
+                     0.013, 0.311);
 }
 
 void expect_valid(const Plc3& plc, const char* what) {

@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 #include "predicates/predicates.hpp"
@@ -23,20 +24,6 @@
 
 namespace pqmesh::tet3d {
 namespace {
-
-// The box [lo, hi] as a validated domain (facets in the order -z, +z, -y, +y, -x, +x).
-Domain3 box_domain(Vec3 lo, Vec3 hi) {
-  Plc3 plc;
-  for (int k = 0; k < 8; ++k)
-    plc.vertices.push_back({(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z});
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    Facet3 f;
-    f.loops.push_back({q[0], q[1], q[2], q[3]});
-    plc.facets.push_back(f);
-  }
-  return make_domain(plc);
-}
 
 // The root's lower z face (one square: the root has no children).
 FaceSquare bottom_square(const OctTree& t, const CornerSet& corners) {
@@ -67,7 +54,7 @@ TEST(WarpRules, SquareCentreMovesWithItsCorners) {
   // by the mean of the four equal moves and stays below the facet.
   const OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const CornerSet corners(t, t.leaves());
-  const Domain3 d = box_domain({-1, -1, 0.01}, {2, 2, 2});
+  const Domain3 d = make_domain(test::box({-1, -1, 0.01}, {2, 2, 2}));
   const FaceSquare s = bottom_square(t, corners);
   const std::vector<WarpCandidate> cand = bottom_candidates(t, s, 6);
   const WarpTable w = warp_box_vertices(t, corners, d, cand);
@@ -90,7 +77,7 @@ TEST(WarpRules, SquareCentreOnAFacetPlaneStays) {
   // of a facet, an exact boundary point: it is not moved.
   const OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const CornerSet corners(t, t.leaves());
-  const Domain3 d = box_domain({0.5, -1, 0.01}, {2, 2, 2});
+  const Domain3 d = make_domain(test::box({0.5, -1, 0.01}, {2, 2, 2}));
   const FaceSquare s = bottom_square(t, corners);
   const WarpTable w = warp_box_vertices(t, corners, d, bottom_candidates(t, s, 6));
   EXPECT_NE(w.find(corner_of(t, 1)), nullptr);
@@ -207,7 +194,7 @@ TEST(WarpRules, FirstPassLooksAtWholeBoxEdges) {
   // (1, 0, 1), crossed by x = 1/64, still passes above E's line.
   const OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const CornerSet corners(t, t.leaves());
-  const Domain3 d = box_domain({1.0 / 64, -1, -1}, {2, 2, 0.25});
+  const Domain3 d = make_domain(test::box({1.0 / 64, -1, -1}, {2, 2, 0.25}));
   const int f = facet_at(d, {1, 0, 0.25}), g = facet_at(d, {1.0 / 64, 0, 0});
   ASSERT_GE(f, 0);
   ASSERT_GE(g, 0);
