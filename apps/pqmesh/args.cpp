@@ -56,4 +56,11 @@ void Args::expect_positional(std::size_t min, std::size_t max) const {
   if (positional_.size() > max) throw UsageError("unexpected argument '" + positional_[max] + "'");
 }
 
+std::string output_option(const Args& args) {
+  const auto short_form = args.option("-o"), long_form = args.option("--output");
+  if (short_form && long_form) throw UsageError("give -o or --output, not both");
+  if (!short_form && !long_form) throw UsageError("-o OUTPUT is required");
+  return short_form ? *short_form : *long_form;
+}
+
 }  // namespace pqmesh::cli

@@ -33,4 +33,8 @@ class Args {
   std::vector<std::string> positional_;
 };
 
+// The output path of a command: -o OUTPUT or --output OUTPUT, required, one of
+// the two. Throws UsageError otherwise.
+std::string output_option(const Args& args);
+
 }  // namespace pqmesh::cli

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
+#include <string>
+
+#include "pqmesh/errors.hpp"
 
 namespace pqmesh::cli {
 
@@ -16,15 +18,24 @@ void write_text_file_atomic(const std::string& path, const std::string& text) {
     if (out) out << text;
     if (!out || !out.flush()) {
       std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write " + path);
+      throw OutputError("cannot write " + path);
     }
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
     std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + error.message());
+    throw OutputError("cannot write " + path + ": " + error.message());
   }
+}
+
+void check_output_directory(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string directory = parent.empty() ? "." : parent.string();
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error))
+    throw OutputError("cannot write " + path + ": no directory " + directory);
+  if (::access(directory.c_str(), W_OK) != 0) throw OutputError("cannot write " + path + ": directory " + directory + " is not writable");
 }
 
 }  // namespace pqmesh::cli

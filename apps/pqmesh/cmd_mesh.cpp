@@ -22,6 +22,7 @@
 #include "pqmesh/quality.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "args.hpp"
+#include "atomic_file.hpp"
 #include "format_option.hpp"
 #include "invalid_mesh.hpp"
 #include "quality/triangle_quality_memo.hpp"
@@ -173,10 +174,8 @@ int run_mesh(const std::vector<std::string>& argv) {
   args.expect_positional(1, 1);
   MeshRun run;
   run.input = args.positional()[0];
-  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
-  if (!out) throw UsageError("-o OUTPUT is required");
-  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
-  run.output = *out;
+  run.output = output_option(args);
+  check_output_directory(run.output);
   run.options.max_size = max_size_option(args);
   run.options.protect_edges = args.flag("--protect-edges");
   if (args.option("--refine-angle")) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "args.hpp"
+#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "format_option.hpp"
 #include "invalid_mesh.hpp"
@@ -158,10 +159,8 @@ int run_mesh3(const std::vector<std::string>& argv) {
   if (args.option("--refine-angle")) throw UsageError("--refine-angle is for 2D input only");
   Mesh3Run run;
   run.input = args.positional()[0];
-  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
-  if (!out) throw UsageError("-o OUTPUT is required");
-  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
-  run.output = *out;
+  run.output = output_option(args);
+  check_output_directory(run.output);
   if (args.option("--max-size")) {
     run.options.max_size = args.number("--max-size", 0);  // throws UsageError unless a finite number
     if (!(run.options.max_size > 0))

@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "args.hpp"
+#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "format_option.hpp"
 #include "invalid_mesh.hpp"
@@ -30,10 +31,8 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
                   {"-o", "--output", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   const std::string input = args.positional()[0];
-  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
-  if (!out) throw UsageError("-o OUTPUT is required");
-  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
-  const std::string output = *out;
+  const std::string output = output_option(args);
+  check_output_directory(output);
   NoSteinerOptions options;
   if (args.option("--refine-angle")) {
     const double a = args.number("--refine-angle", 0);

@@ -151,12 +151,10 @@ int run_octree(const std::vector<std::string>& argv) {
                   {"-o", "--output", "--merge-angle", "--max-size", "--size-field"});
   args.expect_positional(1, 1);
   const std::string& input = args.positional()[0];
-  const auto out = args.option("-o") ? args.option("-o") : args.option("--output");
-  if (!out) throw UsageError("-o OUTPUT is required");
-  if (args.option("-o") && args.option("--output")) throw UsageError("give -o or --output, not both");
-  const std::string& output = *out;
+  const std::string output = output_option(args);
   if (output.size() < 4 || output.compare(output.size() - 4, 4, ".vtu") != 0)
     throw UsageError("the octree is written as .vtu; OUTPUT must end in .vtu");
+  check_output_directory(output);
 
   mv3d::OctreeOptions options;
   if (args.option("--max-size")) {

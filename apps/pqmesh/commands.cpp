@@ -77,7 +77,8 @@ const std::vector<Command>& commands() {
        "  --quiet              print nothing on success\n"
        "\n"
        "Exit 2 for an invalid domain or size field (the message names the file line) and for a 3D\n"
-       "leaf kind not supported yet, 64 for a bad command line, 70 for an internal error.\n",
+       "leaf kind not supported yet, 64 for a bad command line, 70 for an internal error, 73 when\n"
+       "OUTPUT cannot be written (its directory is checked before any work).\n",
        run_mesh},
       {"octree", "build the octree of thesis 4.1 for a 3D domain; write its leaves as .vtu",
        "usage: pqmesh octree INPUT -o BOXES.vtu [--max-size H] [--size-field FILE] [--generic-grid]\n"
@@ -104,7 +105,8 @@ const std::vector<Command>& commands() {
        "  --merge-angle DEG, --no-merge  as for 'pqmesh info'\n"
        "  --quiet            print nothing on success\n"
        "\n"
-       "Exit 2 for a 2D or invalid domain, 64 for a bad command line, 70 for an internal error.\n",
+       "Exit 2 for a 2D or invalid domain, 64 for a bad command line, 70 for an internal error, 73\n"
+       "when BOXES.vtu cannot be written (its directory is checked before any work).\n",
        run_octree},
       {"check", "check a mesh against its input domain (validity report)",
        "usage: pqmesh check MESH --domain INPUT [--no-boundary-steiner] [--max-issues N]\n"

@@ -14,6 +14,7 @@ inline constexpr int kExitCheckFailed = 1;   // the command ran, and the answer 
 inline constexpr int kExitInvalidInput = 2;  // an input file is unreadable or violates the domain rules
 inline constexpr int kExitUsage = 64;        // bad command line
 inline constexpr int kExitInternal = 70;     // a bug in pqmesh
+inline constexpr int kExitCannotWrite = 73;  // an output file cannot be created or written (sysexits EX_CANTCREAT)
 
 struct Command {
   const char* name;

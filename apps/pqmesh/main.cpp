@@ -24,7 +24,8 @@ void print_overview(std::ostream& out) {
     out << c.summary << '\n';
   }
   out << "\nexit codes: 0 ok; 1 the checked mesh is not valid; 2 invalid input (the message names the\n"
-         "offending ids and file line); 64 bad command line; 70 internal error.\n";
+         "offending ids and file line); 64 bad command line; 70 internal error; 73 an output file\n"
+         "cannot be written (nothing is left behind).\n";
 }
 
 }  // namespace
@@ -56,6 +57,9 @@ int main(int argc, char** argv) {
     } catch (const pqmesh::InvalidInput& e) {
       std::cerr << "pqmesh " << c.name << ": " << e.what() << '\n';
       return kExitInvalidInput;
+    } catch (const pqmesh::OutputError& e) {
+      std::cerr << "pqmesh " << c.name << ": " << e.what() << '\n';
+      return kExitCannotWrite;
     } catch (const pqmesh::InternalError& e) {
       std::cerr << "pqmesh " << c.name << ": " << e.what() << "\nplease report this as a bug\n";
       return kExitInternal;

@@ -75,6 +75,14 @@ class DomainError : public InvalidInput {
   using InvalidInput::InvalidInput;
 };
 
+// An output file could not be created or written (a missing directory, no
+// permission, a full disk): the user's environment, not a bug. what() is
+// "cannot write PATH: REASON".
+class OutputError : public Error {
+ public:
+  using Error::Error;
+};
+
 // A broken internal invariant: a bug in pqmesh, never the user's fault.
 class InternalError : public Error {
  public:

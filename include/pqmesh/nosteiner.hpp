@@ -315,8 +315,12 @@ struct NoSteinerOptions {
   // Output the CDT of P instead when its min angle is strictly larger (path
   // CdtBetter; needs compare_cdt). Both are triangulations without boundary
   // Steiner points; the pipeline's min angle stays in pipeline_min_angle.
-  // Measured (docs/ALGORITHM.md §11.12): the pipeline is below the CDT on
-  // most inputs (the thesis's constants are small), so this is on by default.
+  // The last safety net: with quality_pass the pipeline itself is never below
+  // the CDT (the pass's last candidate re-triangulates the whole mesh to the
+  // CDT of P; asserted on every test input, docs/ALGORITHM.md §11.12), so this
+  // fires only with quality_pass off (the construction alone is below the CDT
+  // on most inputs: the thesis's constants are small), a pass stopped by its
+  // step bound, or a pass output that failed verify. On by default.
   bool keep_better_cdt = true;
   // Q \ R (§5.4) connected by the thesis's per-piece fans (Figs. 5.17,
   // 5.19-5.21) instead of the CDT of the same vertices. The CDT's min angle
@@ -327,8 +331,9 @@ struct NoSteinerOptions {
   // Quality post-pass on the Full / QOnly mesh (a deviation beyond the
   // thesis, docs/ALGORITHM.md §11.12; src/nosteiner2d/quality_pass.hpp):
   // flips, removals and moves of Steiner points at the worst triangle while
-  // that raises its angle. Never lowers the min angle, adds no point, keeps
-  // dP exactly at the input vertices. construction_min_angle keeps the
+  // that raises its angle, then CDT re-triangulated cavities up to the whole
+  // mesh. Never lowers the min angle, never stops below the CDT of P, adds no
+  // point, keeps dP exactly at the input vertices. construction_min_angle keeps the
   // thesis construction's value (the one bounded by k g(P)).
   bool quality_pass = true;
 };

@@ -12,7 +12,7 @@
 namespace pqmesh::detail {
 
 void throw_write_error(const std::string& path, int err) {
-  throw Error("cannot write " + path + ": " + (err != 0 ? std::strerror(err) : "I/O error"));
+  throw OutputError("cannot write " + path + ": " + (err != 0 ? std::strerror(err) : "I/O error"));
 }
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {

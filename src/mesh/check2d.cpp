@@ -149,7 +149,6 @@ bool Checker2::run_topology() {
     sink_.note("conformity and domain checks skipped: not every triangle is positively oriented");
     return false;
   }
-  measure_area();
   const bool ok = stage3_edges();
   if (!ok) sink_.note("domain checks of boundary edges and segments skipped: the triangles do not meet edge to edge");
   return ok;

@@ -53,7 +53,7 @@ class Checker2 {
  public:
   Checker2(const TriMesh2& mesh, const CheckOptions& options, CheckReport& report);
 
-  // Stages 1-3 and the area measurement; returns whether stage 3 is clean.
+  // Stages 1-3 (stage 2 also measures the area); returns whether stage 3 is clean.
   bool run_topology();
   // Stage 4, the Volume comparison and locate(); `topology_ok` is what
   // run_topology returned.
@@ -62,8 +62,7 @@ class Checker2 {
  private:
   // check2d_topology.cpp
   bool stage1_indices();
-  bool stage2_orientation();
-  void measure_area();
+  bool stage2_orientation();  // and the area, when every triangle is positive
   bool stage3_edges();
   bool check_boundary_manifold();
   void find_hanging_vertices();

@@ -48,11 +48,18 @@ bool Checker2::stage1_indices() {
 }
 
 // ---- stage 2 -------------------------------------------------------------
+// One read of the triangles and their corners for both the orientation test
+// and the area sum (the sum in triangle order, as a separate pass would add
+// it); the area counts only when every triangle is positively oriented
+// (run_topology stops otherwise).
 bool Checker2::stage2_orientation() {
   bool ok = true;
+  CompensatedSum sum;
   for (std::size_t t = 0; t < m_.triangles.size(); ++t) {
     const auto& q = m_.triangles[t];
-    const Sign s = orient2d(m_.vertices[q[0]], m_.vertices[q[1]], m_.vertices[q[2]]);
+    const Vec2 a = m_.vertices[q[0]], b = m_.vertices[q[1]], c = m_.vertices[q[2]];
+    sum.add(cross(b - a, c - a) / 2.0);
+    const Sign s = orient2d(a, b, c);
     if (s == Sign::Positive) continue;
     ok = false;
     const auto id = static_cast<std::int64_t>(t);
@@ -63,17 +70,11 @@ bool Checker2::stage2_orientation() {
       sink_.add(CheckKind::Orientation, {id},
                 "triangle " + std::to_string(t) + " (" + format_ids(q) + ") is clockwise (orient2d < 0)");
   }
-  return ok;
-}
-
-void Checker2::measure_area() {
-  CompensatedSum sum;
-  for (const auto& q : m_.triangles) {
-    const Vec2 a = m_.vertices[q[0]];
-    sum.add(cross(m_.vertices[q[1]] - a, m_.vertices[q[2]] - a) / 2.0);
+  if (ok) {
+    rep_.volume_measured = true;
+    rep_.mesh_volume = sum.value();
   }
-  rep_.volume_measured = true;
-  rep_.mesh_volume = sum.value();
+  return ok;
 }
 
 // ---- stage 3 -------------------------------------------------------------

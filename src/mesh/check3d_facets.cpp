@@ -111,6 +111,7 @@ void Checker3::prepare_facets(const Domain3& d) {
       continue;
     }
     fp.p0 = pv[i0], fp.p1 = pv[i1], fp.p2 = pv[i2];
+    fp.normal = plane_normal_signs(fp.p0, fp.p1, fp.p2);
     fp.axis = projection_axis(fp.p0, fp.p1, fp.p2);
     // Orientation of the outer loop in the projection: at its
     // lexicographically smallest projected vertex the polygon is convex.
@@ -170,6 +171,28 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
   const std::size_t nb = faces_.boundary.size();
   assigned_.assign(nb, -1);
   assigned_sign_.assign(nb, 0);
+  // on_facet_plane per (vertex, facet), remembered for the first two facets
+  // asked about each vertex (a boundary vertex is on about six boundary
+  // triangles, and on one facet, or two or three along an input edge or at a
+  // vertex); further facets are recomputed. A cache of the same exact answer.
+  struct PlaneMemo {
+    std::array<int, 2> facet{-1, -1};
+    std::array<bool, 2> on{};
+  };
+  std::vector<PlaneMemo> memo(m_.vertices.size());
+  auto on_plane = [&](int f, int v) {
+    PlaneMemo& mm = memo[static_cast<std::size_t>(v)];
+    for (std::size_t k = 0; k < 2; ++k)
+      if (mm.facet[k] == f) return mm.on[k];
+    const bool on = on_facet_plane(planes_[static_cast<std::size_t>(f)], m_.vertices[static_cast<std::size_t>(v)]);
+    for (std::size_t k = 0; k < 2; ++k)
+      if (mm.facet[k] < 0) {
+        mm.facet[k] = f;
+        mm.on[k] = on;
+        break;
+      }
+    return on;
+  };
   for (std::size_t i = 0; i < nb; ++i) {
     const auto& t = faces_.boundary[i];
     const Vec3 a = m_.vertices[t[0]], b = m_.vertices[t[1]], c = m_.vertices[t[2]];
@@ -181,8 +204,7 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
     // choose (the lowest-numbered facet whose closure holds all three).
     int first = -1, candidates = 0;
     for (int f : grid.at(a)) {
-      const FacetPlane& fp = planes_[f];
-      if (!on_facet_plane(fp, a) || !on_facet_plane(fp, b) || !on_facet_plane(fp, c)) continue;
+      if (!on_plane(f, t[0]) || !on_plane(f, t[1]) || !on_plane(f, t[2])) continue;
       if (candidates++ == 0) first = f;
     }
     if (candidates == 1) {
@@ -190,8 +212,7 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
     } else if (candidates > 1) {
       for (int f : grid.at(a)) {
         if (f < first) continue;
-        const FacetPlane& fp = planes_[f];
-        if (!on_facet_plane(fp, a) || !on_facet_plane(fp, b) || !on_facet_plane(fp, c)) continue;
+        if (!on_plane(f, t[0]) || !on_plane(f, t[1]) || !on_plane(f, t[2])) continue;
         if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c)) continue;
         assigned_[i] = f;
         break;

@@ -17,6 +17,7 @@
 #include <limits>
 #include <vector>
 
+#include "mesh/check3d_plane.hpp"
 #include "mesh/check_common.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
@@ -67,18 +68,20 @@ struct FacetPlane {
   int axis = 2;     // projection axis (dropped coordinate)
   Sign turn = Sign::Zero;  // orientation of the outer loop in that projection
   Vec3 lo, hi;      // bounding box
+  std::array<Sign, 3> normal{};  // plane_normal_signs(p0, p1, p2) (check3d_plane.hpp)
 };
 
 // p lies in the facet's plane, or is a faithful rounding of a point of it
 // (within_ulp_of_plane, docs/ALGORITHM.md §5), and in its bounding box
-// widened by an ulp. Exact; exact points pass the first plane test.
+// widened by an ulp. Exact. (A point on the plane lies inside its ulp box, so
+// the plane meets the box: no separate orient3d(p) == 0 test.)
 inline bool on_facet_plane(const FacetPlane& fp, Vec3 p) {
   const double inf = std::numeric_limits<double>::infinity();
   const Vec3 lo{std::nextafter(p.x, -inf), std::nextafter(p.y, -inf), std::nextafter(p.z, -inf)};
   const Vec3 hi{std::nextafter(p.x, inf), std::nextafter(p.y, inf), std::nextafter(p.z, inf)};
   if (hi.x < fp.lo.x || lo.x > fp.hi.x || hi.y < fp.lo.y || lo.y > fp.hi.y || hi.z < fp.lo.z || lo.z > fp.hi.z)
     return false;
-  return orient3d(fp.p0, fp.p1, fp.p2, p) == Sign::Zero || within_ulp_of_plane(p, fp.p0, fp.p1, fp.p2);
+  return within_ulp_of_plane_at_extremes(p, fp.p0, fp.p1, fp.p2, fp.normal);
 }
 
 class Checker3 {

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "mesh/check3d_plane.hpp"
 #include "mesh3d/single_faces.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
@@ -19,25 +20,33 @@ namespace {
 
 class FacetFinder {
  public:
-  explicit FacetFinder(const Domain3& d) : d_(d), tris_of_(d.plc.facets.size()) {
+  explicit FacetFinder(const Domain3& d) : d_(d), tris_of_(d.plc.facets.size()), normal_(d.plc.facets.size()) {
     for (std::size_t t = 0; t < d.facet_triangles.size(); ++t)
       tris_of_[static_cast<std::size_t>(d.facet_triangle_owner[t])].push_back(static_cast<int>(t));
+    for (std::size_t f = 0; f < tris_of_.size(); ++f)
+      if (!tris_of_[f].empty()) {
+        const auto& tri = d.facet_triangles[static_cast<std::size_t>(tris_of_[f].front())];
+        normal_[f] = detail::plane_normal_signs(vtx(tri[0]), vtx(tri[1]), vtx(tri[2]));
+      }
   }
 
   // All three vertices (mesh ids v, coordinates p) pass within_ulp_of_plane
-  // for f's plane. Answers are cached per (vertex, facet): a vertex on a
-  // facet is shared by about six boundary triangles, and the test is exact
-  // arithmetic (GMP) for points on the plane.
+  // for f's plane (decided on two corners of the ulp box,
+  // mesh/check3d_plane.hpp: the same exact answer). Answers are cached per
+  // (vertex, facet): a vertex on a facet is shared by about six boundary
+  // triangles, and the test reaches exact arithmetic for points on the plane.
   bool on_plane(int f, const std::array<int, 3>& v, const std::array<Vec3, 3>& p) {
     const auto& list = tris_of_[static_cast<std::size_t>(f)];
     if (list.empty()) return false;
     const auto& tri = d_.facet_triangles[static_cast<std::size_t>(list.front())];
     const Vec3 &a = vtx(tri[0]), &b = vtx(tri[1]), &c = vtx(tri[2]);
+    const std::array<Sign, 3>& n = normal_[static_cast<std::size_t>(f)];
     for (int i = 0; i < 3; ++i) {
       const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v[static_cast<std::size_t>(i)])) << 32) |
                                 static_cast<std::uint32_t>(f);
       auto it = cache_.find(key);
-      if (it == cache_.end()) it = cache_.emplace(key, within_ulp_of_plane(p[static_cast<std::size_t>(i)], a, b, c)).first;
+      if (it == cache_.end())
+        it = cache_.emplace(key, detail::within_ulp_of_plane_at_extremes(p[static_cast<std::size_t>(i)], a, b, c, n)).first;
       if (!it->second) return false;
     }
     return true;
@@ -64,6 +73,7 @@ class FacetFinder {
   const Vec3& vtx(int v) const { return d_.plc.vertices[static_cast<std::size_t>(v)]; }
   const Domain3& d_;
   std::vector<std::vector<int>> tris_of_;
+  std::vector<std::array<Sign, 3>> normal_;  // plane_normal_signs of each facet's first triangle
   std::unordered_map<std::uint64_t, bool> cache_;
 };
 

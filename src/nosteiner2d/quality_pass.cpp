@@ -11,6 +11,7 @@
 #include <queue>
 #include <utility>
 
+#include "nosteiner2d/cavity_cdt.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
 #include "predicates/predicates.hpp"
 
@@ -47,53 +48,84 @@ bool in_cone(const std::vector<Vec2>& q, std::size_t i, Vec2 b) {
 
 // q[i] q[j] (not adjacent) is a diagonal of the simple CCW polygon q: inside
 // both end cones, meeting no side away from its ends, through no vertex.
+// Each vertex's side of the line q[i] q[j] is computed once: a side whose
+// ends are strictly on one side cannot meet the segment, so only the others
+// go through closed_segments_meet (the same exact answer, fewer orient2d).
 bool is_diagonal(const std::vector<Vec2>& q, std::size_t i, std::size_t j) {
   if (!in_cone(q, i, q[j]) || !in_cone(q, j, q[i])) return false;
   const std::size_t m = q.size();
+  auto side = [&](std::size_t k) { return (k == i || k == j) ? 0 : int(orient2d(q[i], q[j], q[k])); };
+  int side_k = side(0);
   for (std::size_t k = 0; k < m; ++k) {
-    if (k == i || k == j) continue;
-    if (orient2d(q[i], q[j], q[k]) == Sign::Zero && in_box(q[i], q[j], q[k])) return false;
     const std::size_t k1 = (k + 1) % m;
-    if (k1 == i || k1 == j) continue;
-    if (closed_segments_meet(q[i], q[j], q[k], q[k1])) return false;
+    const int side_k1 = side(k1);
+    if (k != i && k != j && side_k == 0 && in_box(q[i], q[j], q[k])) return false;
+    if (k != i && k != j && k1 != i && k1 != j && side_k * side_k1 <= 0 &&
+        closed_segments_meet(q[i], q[j], q[k], q[k1]))
+      return false;
+    side_k = side_k1;
   }
   return true;
 }
 
+// Scratch tables of best_triangulation, reused across calls (no allocation per star).
+struct DpTables {
+  std::vector<signed char> ok;
+  std::vector<double> best;
+  std::vector<int> arg;
+  std::vector<std::pair<int, int>> todo;
+};
+
 // The triangulation of the simple CCW polygon q with the largest min angle
 // (dynamic programming over the sub-polygons q[i..j] cut off by a diagonal
-// or side ij; first maximum in k order). Returns -1 when q has none with
-// every triangle strictly counter-clockwise.
-double best_triangulation(const std::vector<Vec2>& q, std::vector<std::array<int, 3>>& out) {
+// or side ij; first maximum in k order), when that angle exceeds `floor`.
+// Returns it (and the triangles in `out`), or a value <= floor when no
+// triangulation with every triangle strictly counter-clockwise has all its
+// angles above floor. Pruning (the same result as the full table wherever it
+// is used): a split k is skipped when its sub-polygons' values cannot beat
+// the current best nor floor (the candidate is their min with the new
+// triangle's angle), so its diagonals (exact, decided lazily and memoised)
+// and its angle are only computed for splits that can win. A sub-polygon
+// whose value is <= floor is marked -1 (no candidate through it can pass).
+double best_triangulation(const std::vector<Vec2>& q, double floor, std::vector<std::array<int, 3>>& out,
+                          DpTables& tables) {
   const int m = int(q.size());
+  if (m < 3) return -1;
   auto at = [m](int i, int j) { return std::size_t(i * m + j); };
-  std::vector<char> ok(std::size_t(m * m), 0);
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j)
-      ok[at(i, j)] = (j == i + 1 || (i == 0 && j == m - 1)) ? 1 : char(is_diagonal(q, std::size_t(i), std::size_t(j)));
-  std::vector<double> best(std::size_t(m * m), -1);
-  std::vector<int> arg(std::size_t(m * m), -1);
+  std::vector<signed char>& ok = tables.ok;
+  ok.assign(std::size_t(m * m), -1);  // -1: not decided yet
+  auto diagonal = [&](int i, int j) {
+    signed char& d = ok[at(i, j)];
+    if (d < 0)
+      d = (j == i + 1 || (i == 0 && j == m - 1)) ? 1 : static_cast<signed char>(is_diagonal(q, std::size_t(i), std::size_t(j)));
+    return d == 1;
+  };
+  std::vector<double>& best = tables.best;
+  std::vector<int>& arg = tables.arg;
+  best.assign(std::size_t(m * m), -1);
+  arg.assign(std::size_t(m * m), -1);
   for (int len = 2; len < m; ++len)
     for (int i = 0; i + len < m; ++i) {
       const int j = i + len;
-      if (!ok[at(i, j)]) continue;
+      double& b = best[at(i, j)];
       for (int k = i + 1; k < j; ++k) {
-        if (!ok[at(i, k)] || !ok[at(k, j)]) continue;
-        if (k > i + 1 && best[at(i, k)] < 0) continue;
-        if (j > k + 1 && best[at(k, j)] < 0) continue;
+        double sub = 4;  // above every angle
+        if (k > i + 1) sub = best[at(i, k)];
+        if (j > k + 1) sub = std::min(sub, best[at(k, j)]);
+        if (sub <= std::max(b, floor)) continue;  // includes an invalid part (-1)
+        if (!diagonal(i, k) || !diagonal(k, j)) continue;
         if (!ccw(q[std::size_t(i)], q[std::size_t(k)], q[std::size_t(j)])) continue;
-        double v = min_angle(q[std::size_t(i)], q[std::size_t(k)], q[std::size_t(j)]);
-        if (k > i + 1) v = std::min(v, best[at(i, k)]);
-        if (j > k + 1) v = std::min(v, best[at(k, j)]);
-        if (v > best[at(i, j)]) {
-          best[at(i, j)] = v;
+        const double v = std::min(sub, min_angle(q[std::size_t(i)], q[std::size_t(k)], q[std::size_t(j)]));
+        if (v > b && v > floor) {
+          b = v;
           arg[at(i, j)] = k;
         }
       }
     }
-  if (m < 3 || best[at(0, m - 1)] < 0) return -1;
+  if (best[at(0, m - 1)] < 0) return -1;
   out.clear();
-  std::vector<std::pair<int, int>> todo = {{0, m - 1}};
+  std::vector<std::pair<int, int>>& todo = tables.todo;
+  todo.assign(1, {0, m - 1});
   while (!todo.empty()) {
     const auto [i, j] = todo.back();
     todo.pop_back();
@@ -134,6 +166,11 @@ class Pass {
         for (std::size_t size = std::size_t(options_.coarsen_triangles); removed == 0 && size <= 8 * std::size_t(options_.coarsen_triangles); size *= 8)
           removed = coarsen(t, size, angle_[std::size_t(t)]);
         if (removed == 0) {
+          if (options_.large_cavities && large_cavity(t)) {
+            ++st.large_cavities;
+            ++st.steps;
+            continue;
+          }
           st.stopped_stuck = true;
           break;
         }
@@ -188,7 +225,8 @@ class Pass {
   bool link(int v, Link& out) {
     out.star = star(v);
     const std::size_t n = out.star.size();
-    std::vector<std::pair<int, int>> arcs;  // a -> b for triangle (v, a, b)
+    std::vector<std::pair<int, int>>& arcs = arcs_;  // a -> b for triangle (v, a, b)
+    arcs.clear();
     for (int t : out.star) {
       const auto& tr = tri_[std::size_t(t)];
       const int r = tr[0] == v ? 0 : tr[1] == v ? 1 : 2;
@@ -267,11 +305,6 @@ class Pass {
     return -1;
   }
 
-  // The first `size` triangles reached from t across edges (breadth first,
-  // edges in triangle order). When they form a disk (one simple boundary
-  // cycle, Euler characteristic 1) whose inner vertices are all Steiner
-  // vertices, returns the largest min angle of a triangulation of that cycle
-  // (no inner vertex: they are removed) and it in `tris`; else -1.
   // The first `size` triangles reached from t across edges (breadth first, edges in triangle order).
   std::vector<int> grow(int t, std::size_t size) {
     std::vector<int> region = {t};
@@ -321,12 +354,13 @@ class Pass {
   std::int64_t remove_above(const std::vector<int>& verts, double floor) {
     std::int64_t removed = 0;
     Link lk;
+    std::vector<Vec2> q;
+    std::vector<std::array<int, 3>> tris;
     for (int v : verts) {
       if (!link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
-      std::vector<Vec2> q;
+      q.clear();
       for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
-      std::vector<std::array<int, 3>> tris;
-      if (best_triangulation(q, tris) <= floor) continue;
+      if (best_triangulation(q, floor, tris, dp_) <= floor) continue;
       const int marker = marker_[std::size_t(lk.star.front())];
       for (int s : lk.star) alive_[std::size_t(s)] = 0;
       for (const auto& x : tris)
@@ -336,7 +370,68 @@ class Pass {
     return removed;
   }
 
-  double cavity(int t, std::size_t size, std::vector<int>& region, std::vector<std::array<int, 3>>& tris) {
+  // Stuck at t after coarsening: empty the first 4, 8, 16, ... triangles
+  // around t (breadth first, any topology) of their inner vertices and
+  // re-triangulate by the CDT of the boundary (cavity_cdt.hpp); the first
+  // whose smallest new angle exceeds t's is applied. The last candidate is the
+  // whole mesh, whose re-triangulation is the CDT of P (its boundary edges are
+  // the input segments, its inner vertices all the Steiner points), so the pass
+  // never stops below the CDT's min angle. Returns false when none helps.
+  bool large_cavity(int t) {
+    const double base = angle_[std::size_t(t)];
+    for (std::size_t size = 4;; size *= 2) {
+      const std::vector<int> region = grow(t, size);
+      std::vector<char>& in = seen_;
+      in.resize(tri_.size(), 0);
+      for (int r : region) in[std::size_t(r)] = 1;
+      std::vector<std::array<int, 2>> boundary;
+      std::vector<int> verts, on_boundary;
+      for (int r : region) {
+        const auto tr = tri_[std::size_t(r)];
+        for (int e = 0; e < 3; ++e) {
+          const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)];
+          verts.push_back(a);
+          const int u = across(a, b);
+          if (u < 0 || !in[std::size_t(u)]) {
+            boundary.push_back({a, b});
+            on_boundary.push_back(a);
+            on_boundary.push_back(b);
+          }
+        }
+      }
+      for (int r : region) in[std::size_t(r)] = 0;
+      std::sort(verts.begin(), verts.end());
+      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+      std::sort(on_boundary.begin(), on_boundary.end());
+      on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
+      bool inputs_on_boundary = true;  // an input vertex is on dP, never inside a cavity (checked)
+      for (int v : verts)
+        if (v < first_steiner_ && !std::binary_search(on_boundary.begin(), on_boundary.end(), v))
+          inputs_on_boundary = false;
+      if (inputs_on_boundary) {
+        const std::vector<std::array<int, 3>> tris =
+            retriangulate_cavity(pts_, boundary, region.size(), verts.size() - on_boundary.size());
+        double f = tris.empty() ? -1 : 4;
+        for (const auto& x : tris)
+          f = std::min(f, min_angle(pts_[std::size_t(x[0])], pts_[std::size_t(x[1])], pts_[std::size_t(x[2])]));
+        if (f > base) {
+          const int marker = marker_[std::size_t(t)];
+          for (int r : region) alive_[std::size_t(r)] = 0;
+          for (const auto& x : tris) add(x, marker);
+          return true;
+        }
+      }
+      if (region.size() < size) return false;  // the whole mesh was the last candidate
+    }
+  }
+
+  // The first `size` triangles reached from t (grow). When they form a disk
+  // (one simple boundary cycle, Euler characteristic 1) whose inner vertices
+  // are all Steiner vertices, returns the largest min angle of a
+  // triangulation of that cycle (no inner vertex: they are removed) and it in
+  // `tris` when above floor (best_triangulation); else a value <= floor.
+  double cavity(int t, std::size_t size, double floor, std::vector<int>& region,
+                std::vector<std::array<int, 3>>& tris) {
     region = grow(t, size);
     if (region.size() < size) return -1;
     std::vector<std::pair<int, int>> boundary;
@@ -377,7 +472,7 @@ class Pass {
     std::vector<Vec2> q;
     for (int v : cycle) q.push_back(pts_[std::size_t(v)]);
     std::vector<std::array<int, 3>> local;
-    const double f = best_triangulation(q, local);
+    const double f = best_triangulation(q, floor, local, dp_);
     tris.clear();
     for (const auto& x : local)
       tris.push_back({cycle[std::size_t(x[0])], cycle[std::size_t(x[1])], cycle[std::size_t(x[2])]});
@@ -421,7 +516,7 @@ class Pass {
       std::vector<Vec2> q;
       for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
       std::vector<std::array<int, 3>> tris;
-      const double f = best_triangulation(q, tris);
+      const double f = best_triangulation(q, value, tris, dp_);
       if (f > value) {
         value = f;
         kind = Kind::Remove;
@@ -448,7 +543,7 @@ class Pass {
       for (std::size_t size = 4; size <= 64; size *= 2) {
         std::vector<int> r;
         std::vector<std::array<int, 3>> tris;
-        const double f = cavity(t, size, r, tris);
+        const double f = cavity(t, size, value, r, tris);
         if (f > value) {
           value = f;
           kind = Kind::Cavity;
@@ -537,6 +632,8 @@ class Pass {
   std::vector<double> angle_;
   std::vector<std::vector<int>> inc_;
   std::vector<char> seen_;  // scratch of grow(), all 0 between calls
+  DpTables dp_;             // scratch of best_triangulation
+  std::vector<std::pair<int, int>> arcs_;  // scratch of link()
   std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> heap_;
 };
 

@@ -24,7 +24,16 @@
 //   * when nothing helps: coarsen around it - remove every Steiner vertex of
 //     the 256 triangles nearest to it (breadth first; 2048 when none of those
 //     is) whose star polygon has a triangulation with all angles above the
-//     mesh's smallest, then retry; stop when none is removable.
+//     mesh's smallest, then retry;
+//   * when none is removable: empty the first 4, 8, 16, ... triangles around
+//     it (breadth first, any topology: holes and pinched vertices allowed) of
+//     their inner (Steiner) vertices and re-triangulate by the CDT of the
+//     cavity's boundary (cavity_cdt.hpp); the first whose smallest new angle
+//     exceeds the worst one's is applied; stop when none does. The last
+//     candidate is the whole mesh: its boundary edges are the input segments
+//     and its inner vertices all the Steiner points, so its re-triangulation
+//     is the CDT of P. Hence the pass never stops below the CDT's min angle
+//     (it can still stop there on the step bound; never seen).
 //
 // Invariants (every accept decided by exact orient2d on the stored doubles):
 // every triangle stays strictly counter-clockwise; vertices with id <
@@ -48,6 +57,7 @@ namespace pqmesh::detail {
 struct QualityPassStats {
   double min_angle_before = 0, min_angle_after = 0;  // radians
   std::int64_t flips = 0, removals = 0, moves = 0, cavities = 0, coarsened = 0, steps = 0;
+  std::int64_t large_cavities = 0;  // CDT re-triangulated cavities of the last stage (cavity_cdt.hpp)
   bool stopped_stuck = false;  // stopped because no change raised the worst triangle (else: step bound)
 };
 
@@ -56,6 +66,7 @@ struct QualityPassOptions {
   int max_star = 64;            // stars / cavities with more boundary vertices are not re-triangulated (the DP is cubic)
   int move_evaluations = 48;    // star evaluations per compass search
   int coarsen_triangles = 256;  // stuck: neighbourhood (triangles) whose removable Steiner vertices go
+  bool large_cavities = true;   // stuck after coarsening: cavities of 4, 8, ... triangles up to the whole mesh
 };
 
 // Improves `mesh` in place (triangles, triangle_markers, vertices; unused

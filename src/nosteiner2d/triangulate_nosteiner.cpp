@@ -204,7 +204,7 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
     st.pass_flips = pass.flips;
     st.pass_removals = pass.removals;
     st.pass_moves = pass.moves;
-    st.pass_cavities = pass.cavities;
+    st.pass_cavities = pass.cavities + pass.large_cavities;
     st.pass_removals += pass.coarsened;
     st.pass_stuck = pass.stopped_stuck;
     st.seconds_pass = since(t);

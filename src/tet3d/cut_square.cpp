@@ -99,11 +99,18 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
     fan(centre_id(), false);
     return CutCase::C2On;
   }
-  // Centre beyond F: clip the segments from the centre at the chord.
+  // Centre beyond F: clip the segments from the centre at the chord. The
+  // segments start at the centre where it is (warped with its corners,
+  // warp.hpp, which keeps its side of F): from the prewarped centre the
+  // projections left the bent face and the chord's line slanted past an
+  // edge-box apex (docs/ALGORITHM.md §12.5, bounded seed 76). A
+  // construction only: which points are projected was decided above.
+  const Warp* cw = warps != nullptr ? warps->find(centre) : nullptr;
+  const Vec3 from = cw != nullptr ? cw->at : C;
   auto projection = [&](const PiPoint& p) {
     if (p.on_facet) return p.id;
     const VertexKey key{VertexKind::ChordProjection, centre, book.key(p.id).p, plane.facet()};
-    return book.id(key, [&] { return plane.crossing(C, book.point(p.id)); });
+    return book.id(key, [&] { return plane.crossing(from, book.point(p.id)); });
   };
   for (std::size_t j = 0; j + 1 < walk.size(); ++j) {
     const int p = walk[j].id, q = walk[j + 1].id;

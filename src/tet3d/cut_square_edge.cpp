@@ -351,6 +351,10 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
   // Centre beyond chord t: project π's other sides onto it from the centre.
   const int t = cf == Sign::Positive ? 0 : 1;
   const FacetPlane& pl = *planes[t];
+  // From the centre where it is (warped with its corners, keeping its sides;
+  // as cut_square.cpp's Case C2): a construction only.
+  const Warp* cw = warps != nullptr ? warps->find(centre) : nullptr;
+  const Vec3 from = cw != nullptr ? cw->at : C;
   auto projection = [&](std::size_t j) {
     RPoint& p = r[poly[j % np].r];
     if (p.status == Sign::Zero && p.tag == t) return id_of(p);
@@ -359,7 +363,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
                                  : VertexKey{VertexKind::CrossingProjection, centre,
                                              ring[static_cast<std::size_t>(p.ring)], pl.facet()};
     const Vec3 at = book.point(id_of(p));
-    return book.id(key, [&] { return pl.crossing(C, at); });
+    return book.id(key, [&] { return pl.crossing(from, at); });
   };
   for (std::size_t j = 0; j < np; ++j) {
     if (poly[j].chord_after == t) continue;

@@ -13,6 +13,10 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "pqmesh/errors.hpp"
 #include "tet3d/cut_square.hpp"
 #include "tet3d/edge_point.hpp"
@@ -327,9 +331,9 @@ class Assembler {
   }
 
   BoxMesh finish() {
-    out_.mesh.vertices = book_.points();
-    out_.keys.clear();
-    for (int i = 0; i < book_.size(); ++i) out_.keys.push_back(book_.key(i));
+    // The book is not used after this: its tables are moved, not copied.
+    out_.mesh.vertices = book_.take_points();
+    out_.keys = book_.take_keys();
     out_.mesh.tetrahedron_markers.assign(out_.mesh.tetrahedra.size(), 0);
     return std::move(out_);
   }
@@ -574,97 +578,134 @@ void run_jobs(Assembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
 
 }  // namespace
 
+namespace {
+
+// Every ring point of every job's squares, with the facets of the boxes
+// using it (warp.hpp), then the square centres, in job order: deterministic,
+// so a second call gives the same list.
+std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                                           std::span<const BoxJob> jobs) {
+  PointBook scratch;
+  const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
+  std::vector<WarpCandidate> candidates;
+  std::unordered_map<GridPoint, std::size_t, GridPointHash> index, centre_index;
+  std::vector<WarpCandidate> centres;
+  std::vector<FaceSquare> squares;
+  for (const BoxJob& j : jobs) {
+    squares.clear();
+    job_squares(tree, corners, j, squares);
+    const BoxFaces faces = job_faces(faces_only, j);
+    const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
+    // The job's box (a vertex job's united box) for its whole edges.
+    const BoxKey<3>& jkey = tree.key(j.leaf);
+    const GridPoint box_lo = j.kind == BoxKind::Vertex ? united_lo(jkey, j.block) : key_corner(jkey, 0);
+    GridPoint box_hi = box_lo;
+    for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
+    for (const FaceSquare& s : squares) {
+      // The square's centre, carried with its four corners (warp.hpp).
+      // A final square's centre is no leaf corner (box_faces.hpp), so never
+      // a ring point.
+      const auto [cit, cfresh] = centre_index.try_emplace(s.centre(), centres.size());
+      if (cfresh) {
+        GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
+        c1.f[static_cast<std::size_t>(s.u)] += s.side;
+        c2.f[static_cast<std::size_t>(s.u)] += s.side;
+        c2.f[static_cast<std::size_t>(s.v)] += s.side;
+        c3.f[static_cast<std::size_t>(s.v)] += s.side;
+        centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1, {}});
+      }
+      for (const int f : faces.facets) {
+        std::vector<int>& cf = centres[cit->second].facets;
+        if (std::find(cf.begin(), cf.end(), f) == cf.end()) cf.push_back(f);
+      }
+      const std::vector<GridPoint> ring = square_ring(s, corners);
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const GridPoint& p = ring[i];
+        const auto [it, fresh] = index.try_emplace(p, candidates.size());
+        if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
+        WarpCandidate& c = candidates[it->second];
+        c.level = std::max(c.level, level);
+        for (const int f : faces.facets)
+          if (std::find(c.facets.begin(), c.facets.end(), f) == c.facets.end()) c.facets.push_back(f);
+        for (const GridPoint& q : {ring[(i + 1) % ring.size()], ring[(i + ring.size() - 1) % ring.size()]})
+          if (std::find(c.neighbours.begin(), c.neighbours.end(), q) == c.neighbours.end()) c.neighbours.push_back(q);
+        // p lies on the box edge along `axis` when its other two
+        // coordinates are box bounds.
+        auto on_bound = [&](int a) {
+          const auto k = static_cast<std::size_t>(a);
+          return p.f[k] == box_lo.f[k] || p.f[k] == box_hi.f[k];
+        };
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!on_bound((axis + 1) % 3) || !on_bound((axis + 2) % 3)) continue;
+          std::pair<GridPoint, GridPoint> edge{p, p};
+          edge.first.f[static_cast<std::size_t>(axis)] = box_lo.f[static_cast<std::size_t>(axis)];
+          edge.second.f[static_cast<std::size_t>(axis)] = box_hi.f[static_cast<std::size_t>(axis)];
+          if (std::find(c.box_edges.begin(), c.box_edges.end(), edge) == c.box_edges.end())
+            c.box_edges.push_back(edge);
+        }
+      }
+    }
+  }
+  for (WarpCandidate& c : centres) {
+    if (index.count(c.p) != 0) throw InternalError("tet3d: a square centre is a ring point");
+    candidates.push_back(std::move(c));
+  }
+  return candidates;
+}
+
+// The candidates are hundreds of thousands of small blocks (their vectors)
+// freed together; glibc keeps such memory in its heap, and the pass after
+// them allocates its tables as fresh mappings, so the freed pages would count
+// twice in the peak. They go back to the system here (glibc only; elsewhere
+// a no-op).
+void release_free_heap() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+}  // namespace
+
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                    std::span<const BoxJob> jobs, const BoxMeshOptions& options) {
   WarpTable warps;
   std::int64_t rebuilds = 0;
+  // The warped run's trial pass (collect mode) that inverted nothing: it made
+  // exactly the tetrahedra the final pass would make (same table, same job
+  // order; collect mode differs only where a tetrahedron inverts), so it is
+  // the result and the final pass is skipped.
+  std::unique_ptr<Assembler> done;
   if (options.warp) {
-    // Every ring point of every job's squares, with the facets of the boxes
-    // using it (warp.hpp), in job order: deterministic.
-    PointBook scratch;
-    const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
-    std::vector<WarpCandidate> candidates;
-    std::unordered_map<GridPoint, std::size_t, GridPointHash> index, centre_index;
-    std::vector<WarpCandidate> centres;
-    std::vector<FaceSquare> squares;
-    for (const BoxJob& j : jobs) {
-      squares.clear();
-      job_squares(tree, corners, j, squares);
-      const BoxFaces faces = job_faces(faces_only, j);
-      const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
-      // The job's box (a vertex job's united box) for its whole edges.
-      const BoxKey<3>& jkey = tree.key(j.leaf);
-      const GridPoint box_lo = j.kind == BoxKind::Vertex ? united_lo(jkey, j.block) : key_corner(jkey, 0);
-      GridPoint box_hi = box_lo;
-      for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
-      for (const FaceSquare& s : squares) {
-        // The square's centre, carried with its four corners (warp.hpp).
-        // A final square's centre is no leaf corner (box_faces.hpp), so never
-        // a ring point.
-        const auto [cit, cfresh] = centre_index.try_emplace(s.centre(), centres.size());
-        if (cfresh) {
-          GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
-          c1.f[static_cast<std::size_t>(s.u)] += s.side;
-          c2.f[static_cast<std::size_t>(s.u)] += s.side;
-          c2.f[static_cast<std::size_t>(s.v)] += s.side;
-          c3.f[static_cast<std::size_t>(s.v)] += s.side;
-          centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1, {}});
-        }
-        for (const int f : faces.facets) {
-          std::vector<int>& cf = centres[cit->second].facets;
-          if (std::find(cf.begin(), cf.end(), f) == cf.end()) cf.push_back(f);
-        }
-        const std::vector<GridPoint> ring = square_ring(s, corners);
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          const GridPoint& p = ring[i];
-          const auto [it, fresh] = index.try_emplace(p, candidates.size());
-          if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
-          WarpCandidate& c = candidates[it->second];
-          c.level = std::max(c.level, level);
-          for (const int f : faces.facets)
-            if (std::find(c.facets.begin(), c.facets.end(), f) == c.facets.end()) c.facets.push_back(f);
-          for (const GridPoint& q : {ring[(i + 1) % ring.size()], ring[(i + ring.size() - 1) % ring.size()]})
-            if (std::find(c.neighbours.begin(), c.neighbours.end(), q) == c.neighbours.end()) c.neighbours.push_back(q);
-          // p lies on the box edge along `axis` when its other two
-          // coordinates are box bounds.
-          auto on_bound = [&](int a) {
-            const auto k = static_cast<std::size_t>(a);
-            return p.f[k] == box_lo.f[k] || p.f[k] == box_hi.f[k];
-          };
-          for (int axis = 0; axis < 3; ++axis) {
-            if (!on_bound((axis + 1) % 3) || !on_bound((axis + 2) % 3)) continue;
-            std::pair<GridPoint, GridPoint> edge{p, p};
-            edge.first.f[static_cast<std::size_t>(axis)] = box_lo.f[static_cast<std::size_t>(axis)];
-            edge.second.f[static_cast<std::size_t>(axis)] = box_hi.f[static_cast<std::size_t>(axis)];
-            if (std::find(c.box_edges.begin(), c.box_edges.end(), edge) == c.box_edges.end())
-              c.box_edges.push_back(edge);
-          }
-        }
-      }
-    }
-    for (WarpCandidate& c : centres) {
-      if (index.count(c.p) != 0) throw InternalError("tet3d: a square centre is a ring point");
-      candidates.push_back(std::move(c));
-    }
-    warps = warp_box_vertices(tree, corners, domain, candidates);
+    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs));
+    release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
     // vertex centring keep them apart, not done here): the moved points of
     // every inverted tetrahedron are frozen (left in place, counted) and the
-    // table rebuilt, until no tetrahedron inverts. Deterministic.
+    // table rebuilt, until no tetrahedron inverts. Deterministic. The
+    // candidates (about half the peak memory of a run) are not kept through
+    // the trial passes: a rebuild makes them again (same list).
     std::unordered_set<GridPoint, GridPointHash> frozen;
     for (int round = 0; round < 16; ++round) {
-      Assembler trial(tree, corners, domain, &warps);
-      trial.collect_bad();
-      run_jobs(trial, tree, jobs);
-      if (trial.bad().empty()) break;
+      auto trial = std::make_unique<Assembler>(tree, corners, domain, &warps);
+      trial->collect_bad();
+      run_jobs(*trial, tree, jobs);
+      if (trial->bad().empty()) {
+        done = std::move(trial);
+        break;
+      }
       ++rebuilds;
-      for (const GridPoint& g : trial.bad()) frozen.insert(g);
-      warps = warp_box_vertices(tree, corners, domain, candidates, &frozen);
+      for (const GridPoint& g : trial->bad()) frozen.insert(g);
+      trial.reset();
+      warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen);
+      release_free_heap();
     }
   }
-  Assembler a(tree, corners, domain, options.warp ? &warps : nullptr);
-  run_jobs(a, tree, jobs);
+  if (!done) {
+    done = std::make_unique<Assembler>(tree, corners, domain, options.warp ? &warps : nullptr);
+    run_jobs(*done, tree, jobs);
+  }
+  Assembler& a = *done;
   a.count_squares();
   BoxMesh out = a.finish();
   out.warped = static_cast<std::int64_t>(warps.size());

@@ -49,6 +49,15 @@ class FirstUseIndex {
   }
   const Key& key(int id) const { return keys_[static_cast<std::size_t>(id)]; }
   int size() const { return static_cast<int>(keys_.size()); }
+  // The keys by id, moved out (no copy at the peak of a run); the index is
+  // empty afterwards.
+  std::vector<Key> take_keys() {
+    std::vector<Slot>().swap(slots_);
+    mask_ = 0;
+    std::vector<Key> out = std::move(keys_);
+    keys_.clear();
+    return out;
+  }
 
  private:
   struct Slot {

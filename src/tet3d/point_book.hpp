@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "pqmesh/vec.hpp"
@@ -34,6 +35,14 @@ class PointBook {
   const VertexKey& key(int id) const { return index_.key(id); }
   int size() const { return index_.size(); }
   const std::vector<Vec3>& points() const { return points_; }
+  // Coordinates and keys by id, moved out when the book is done (no copies
+  // at the memory peak of a run); the book is empty afterwards.
+  std::vector<Vec3> take_points() {
+    std::vector<Vec3> out = std::move(points_);
+    points_.clear();
+    return out;
+  }
+  std::vector<VertexKey> take_keys() { return index_.take_keys(); }
 
  private:
   template <class MakeCoordinates>

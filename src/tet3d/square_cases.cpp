@@ -334,9 +334,9 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
     } else if (sf[i] * sf[j] == Sign::Negative) {
       for (std::size_t k = 0; k < 2; ++k) {
         const bool is_f = ec[k]->f().facet() == facet;
-        const Sign at = is_f ? ec[k]->g_at_f_crossing(g.corners[i], g.corners[j])
-                             : ec[k]->f_at_g_crossing(g.corners[i], g.corners[j]);
-        in[k] = at != bad[k];
+        const Sign crossing_side = is_f ? ec[k]->g_at_f_crossing(g.corners[i], g.corners[j])
+                                        : ec[k]->f_at_g_crossing(g.corners[i], g.corners[j]);
+        in[k] = crossing_side != bad[k];
       }
       ends.push_back(in);
     }

@@ -300,12 +300,33 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // of those, the one with the largest smallest clearance (a vertex
     // 0.0003 h from F otherwise stays there: aspect 6,629 on a random
     // prism; docs/ALGORITHM.md §12.5).
+    // Moves along a ring segment's line (gap filled): v = x0 moved away from
+    // a ring neighbour w, along the axis of [v, w], by h/16 or a fraction of
+    // it. For the segment [v, w] itself the line is unchanged (only one
+    // coordinate of v changes), so orient3d(a, b, v, w) keeps its sign
+    // exactly and F's crossing of it stays the same point; when v lies near
+    // F and the segment leaves F at an angle, this is the part of the
+    // thesis's move along F's normal that the side rules allow (a box corner
+    // clipped by F at 5e-7 h, whose h/16 move along the normal changes the
+    // side of E's line a crossed segment passes: bounded random seed 58,
+    // docs/ALGORITHM.md §12.5). The same rules and the same "improves every
+    // clearance" test as the shortened moves decide; these are tried at full
+    // length too (the refused second-pass moves were tried already). Key
+    // facet: -1 (no facet's move).
+    const std::size_t first_line_move = refused.size();
+    if (!ok)
+      for (const GridPoint& w : c.neighbours) {
+        const Vec3 away = x0 - grid_coordinates(tree, w);
+        const double len = norm(away);
+        if (len > 0) refused.push_back({x0 + (h / 16 / len) * away, -1});
+      }
     if (!ok) {
       const std::vector<double> q0 = clearances(x0);
       auto smallest = [](const std::vector<double>& q) { return q.empty() ? 1.0 : *std::min_element(q.begin(), q.end()); };
       double best = smallest(q0);
-      for (double t = 0.5; t >= 1.0 / 16; t /= 2)
-        for (const auto& [target, key_facet] : refused) {
+      for (double t = 1.0; t >= 1.0 / 16; t /= 2)
+        for (std::size_t r = t == 1.0 ? first_line_move : 0; r < refused.size(); ++r) {
+          const auto& [target, key_facet] = refused[r];
           const Vec3 z = x0 + t * (target - x0);
           const std::vector<double> q = clearances(z);
           bool no_worse = true;

@@ -40,7 +40,11 @@
 // accepted and no nearer than the prewarped point to any facet of v's boxes
 // (in units of h/16, capped at 1) and no ring segment from v nearer to a P
 // edge between them (h/8), the smallest of these clearances larger
-// (`shortened`); else v stays (`conflicts`). The caller may freeze points
+// (`shortened`); then (gap filled, bounded seed 58) to v moved away from a
+// ring neighbour w along the axis of [v, w], h/16 or 1/2 .. 1/16 of it, on
+// the same rules and clearance test: [v, w] keeps its line, so its side of
+// E's line and F's crossing of it are unchanged (`shortened`); else v stays
+// (`conflicts`). The caller may freeze points
 // whose move inverted a tetrahedron (`frozen`, facet_boxes.cpp).
 //
 // Square centres (gap filled): the thesis keeps the centre c of a Case A

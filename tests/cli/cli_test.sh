@@ -70,6 +70,19 @@ if [[ ! -e $work/never.vtu ]]; then ok; else fail "failed convert left an output
 expect 2 "convert to an unknown extension" -- "$pqmesh" convert "$fixtures/cube_kuhn.mesh" "$work/never.xyz"
 if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "failed convert left a file: $(ls "$work")"; fi
 
+# An output that cannot be written (no such directory, a read-only one) exits
+# 73 with "cannot write PATH", before any meshing for the meshing commands.
+missing_dir=$work/no_such_dir
+for job in "mesh $data/2d/square.poly" "mesh $data/3d/cube.poly" "mesh --no-boundary-steiner $data/2d/square.poly" \
+  "octree $data/3d/cube.poly"; do
+  read -r -a job_args <<< "$job"
+  expect 73 "${job_args[0]} into a missing directory" -- "$pqmesh" "${job_args[@]}" -o "$missing_dir/m.vtu"
+  contains "$work/err" "cannot write $missing_dir/m.vtu: no directory $missing_dir" "${job}: the error names the output path"
+done
+expect 73 "convert into a missing directory" -- "$pqmesh" convert "$fixtures/cube_kuhn.mesh" "$missing_dir/c.vtu"
+contains "$work/err" "cannot write $missing_dir/c.vtu" "convert: the error names the output path"
+if [[ ! -e $missing_dir ]]; then ok; else fail "a refused write created $missing_dir"; fi
+
 # mesh: the 2D quadtree mesher end to end. Every written mesh passes
 # 'pqmesh check'; a refused run (3D input, bad options, bad size field)
 # exits with its code and leaves no output file.

@@ -76,6 +76,12 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   EXPECT_GE(s.min_angle, s.pipeline_min_angle);
   // The quality post-pass never lowers the min angle (quality_pass.hpp).
   EXPECT_GE(s.pipeline_min_angle, s.construction_min_angle);
+  // ... and never stops below the CDT of P (its last candidate, the whole
+  // mesh as one cavity, is re-triangulated to the CDT of P): the pipeline
+  // itself, before keep_better_cdt, is never worse than the CDT.
+  if (options.quality_pass && options.compare_cdt) {
+    EXPECT_GE(s.pipeline_min_angle, s.cdt_min_angle);
+  }
   if (!options.quality_pass) {
     EXPECT_EQ(s.pipeline_min_angle, s.construction_min_angle);
   }

@@ -27,9 +27,8 @@ constexpr double kMeasuredK = 5e-3;
 
 // Measured floor of (construction + quality post-pass) / g(P), rounded down
 // (docs/ALGORITHM.md §11.12; quality_pass.hpp): 0.161 on data/2d (comb),
-// 0.055 on the hard cases (regular 1000-gon). Measured too: the pass is never
-// below the CDT of P on these 17 inputs (counted, printed, not asserted: the
-// keep_better_cdt net is what guarantees it).
+// 0.055 on the hard cases (regular 1000-gon). The pass never ends below the
+// CDT of P (its whole-mesh cavity stage; asserted in run_and_check).
 constexpr double kMeasuredKPass = 0.05;
 
 Pslg2 loops_pslg(const std::vector<std::vector<Vec2>>& loops) {

@@ -3,11 +3,11 @@
 // tests): every output passes check_mesh with the no-boundary-Steiner check
 // (nosteiner_run.hpp), and the property achieved >= k g(P) holds for the
 // construction's mesh (before the quality pass and keep_better_cdt) with the
-// measured k below. The seeds where the pass ends below the CDT are printed
-// (measured 7 of 300, docs/ALGORITHM.md §11.12).
+// measured k below. After the quality pass the pipeline (before
+// keep_better_cdt) is never below the CDT of P (asserted in run_and_check;
+// before the pass's whole-mesh cavity stage it was on 7 of 300, seeds 21, 59,
+// 60, 78, 116, 144, 217, docs/ALGORITHM.md §11.12).
 #include <gtest/gtest.h>
-
-#include <cstdio>
 
 #include "nosteiner_run.hpp"
 #include "support/random_domains.hpp"
@@ -31,9 +31,6 @@ void run_seeds(std::uint64_t first, std::uint64_t last) {
     const NoSteinerResult res = test::run_and_check(d, test::describe_polygon(seed), st);
     const NoSteinerStats& s = res.stats;
     EXPECT_GE(s.construction_min_angle, kMeasuredK * s.g) << test::describe_polygon(seed);
-    if (s.pipeline_min_angle < s.cdt_min_angle)  // measured, reported (keep_better_cdt covers it)
-      std::printf("  below the CDT after the quality pass: %s: %.5f < %.5f deg\n", test::describe_polygon(seed).c_str(),
-                  s.pipeline_min_angle * 180 / 3.141592653589793, s.cdt_min_angle * 180 / 3.141592653589793);
     EXPECT_EQ(s.pipeline_path, NoSteinerPath::Full) << test::describe_polygon(seed) << ": " << s.fallback_reason;
   }
   test::print(st, ("random polygons, seeds " + std::to_string(first) + "-" + std::to_string(last)).c_str());
