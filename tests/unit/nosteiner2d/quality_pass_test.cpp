@@ -75,6 +75,17 @@ TEST(QualityPass, StuckLeavesMeshAlone) {
   EXPECT_EQ(m.vertices, before.vertices);
 }
 
+// The thesis construction alone: no quality pass, no CDT comparison or
+// better-of-two choice, no verify (the tests check the meshes themselves).
+NoSteinerOptions construction_only() {
+  NoSteinerOptions o;
+  o.verify = false;
+  o.keep_better_cdt = false;
+  o.compare_cdt = false;
+  o.quality_pass = false;
+  return o;
+}
+
 // The construction's meshes (quality_pass off) of data/2d, passed through
 // improve_min_angle: valid, no boundary Steiner point, input vertices first
 // and unchanged, min angle never lower; a second run on a copy of the input
@@ -84,11 +95,7 @@ TEST(QualityPass, ConstructionMeshesOfCorpus) {
        {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"}) {
     SCOPED_TRACE(name);
     const Domain2 d = make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly")));
-    NoSteinerOptions o;
-    o.verify = false;
-    o.keep_better_cdt = false;
-    o.compare_cdt = false;
-    o.quality_pass = false;
+    NoSteinerOptions o = construction_only();
     const TriMesh2 construction = triangulate_without_boundary_steiner(d, o).mesh;
     TriMesh2 a = construction, b = construction;
     const int n = int(d.pslg.vertices.size());
@@ -130,11 +137,7 @@ TEST(QualityPass, LargeCavitiesLiftTheStuckRandomPolygonsToTheCdt) {
     const std::string what = test::describe_polygon(seed);
     SCOPED_TRACE(what);
     const Domain2 d = make_domain(test::random_polygon_with_holes(seed));
-    NoSteinerOptions o;
-    o.verify = false;
-    o.keep_better_cdt = false;
-    o.compare_cdt = false;
-    o.quality_pass = false;
+    NoSteinerOptions o = construction_only();
     const TriMesh2 construction = triangulate_without_boundary_steiner(d, o).mesh;
     const int n = int(d.pslg.vertices.size());
     const double cdt = cdt_min_angle(d);

@@ -74,6 +74,33 @@ inline Plc3 prism(const std::vector<Vec2>& poly, double z0, double z1) {
   return plc;
 }
 
+// The right prism over the polygon `xz` (in the x-z plane, counter-
+// clockwise) for y in [y0, y1]: facet i is the side quad over polygon edge i,
+// then the two caps (y0, y1). Unlike the fixtures above, its facets are not
+// listed outward: the warping tests that use it only need make_domain, which
+// orients them.
+inline Plc3 prism_xz(const std::vector<std::array<double, 2>>& xz, double y0, double y1) {
+  Plc3 plc;
+  const int n = static_cast<int>(xz.size());
+  for (const double y : {y0, y1})
+    for (const auto& q : xz) plc.vertices.push_back({q[0], y, q[1]});
+  for (int i = 0; i < n; ++i) {
+    Facet3 f;
+    f.loops.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
+    plc.facets.push_back(f);
+  }
+  Facet3 lo, hi;
+  lo.loops.emplace_back();
+  hi.loops.emplace_back();
+  for (int i = 0; i < n; ++i) {
+    lo.loops[0].push_back(i);
+    hi.loops[0].push_back(n + i);
+  }
+  plc.facets.push_back(lo);
+  plc.facets.push_back(hi);
+  return plc;
+}
+
 // The prism from z = 0 to z = h.
 inline Plc3 prism(const std::vector<Vec2>& poly, double h) { return prism(poly, 0, h); }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 #include "predicates/predicates.hpp"
@@ -17,30 +18,6 @@
 
 namespace pqmesh::tet3d {
 namespace {
-
-// The right prism over the polygon `xz` (x-z plane, counter-clockwise) for
-// y in [y0, y1]: the side quad of polygon edge i is facet i, then the caps.
-Domain3 prism_xz(const std::vector<std::array<double, 2>>& xz, double y0, double y1) {
-  Plc3 plc;
-  const int n = static_cast<int>(xz.size());
-  for (const double y : {y0, y1})
-    for (const auto& q : xz) plc.vertices.push_back({q[0], y, q[1]});
-  for (int i = 0; i < n; ++i) {
-    Facet3 f;
-    f.loops.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
-    plc.facets.push_back(f);
-  }
-  Facet3 lo, hi;
-  lo.loops.emplace_back();
-  hi.loops.emplace_back();
-  for (int i = 0; i < n; ++i) {
-    lo.loops[0].push_back(i);
-    hi.loops[0].push_back(n + i);
-  }
-  plc.facets.push_back(lo);
-  plc.facets.push_back(hi);
-  return make_domain(plc);
-}
 
 GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
 
@@ -67,7 +44,7 @@ TEST(WarpLineMove, CornerNearFMovesAlongItsCrossedSegment) {
   //    the other segments: along -y keeps every distance, along -z crosses F.
   const OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const CornerSet corners(t, t.leaves());
-  const Domain3 d = prism_xz({{9.0 / 64, 1.0 / 64}, {0.5, 2}, {-2, 2}, {-2, -1}, {-1, -1.0 / 8}}, -1, 2);
+  const Domain3 d = make_domain(test::prism_xz({{9.0 / 64, 1.0 / 64}, {0.5, 2}, {-2, 2}, {-2, -1}, {-1, -1.0 / 8}}, -1, 2));
   const int f = 4, g = 0;
   const GridPoint v = corner_of(t, 0), wx = corner_of(t, 1);
   const std::vector<WarpCandidate> cand = {{v, {f, g}, {wx, corner_of(t, 2), corner_of(t, 4)}, {}, 0, {}}};

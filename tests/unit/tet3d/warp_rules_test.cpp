@@ -85,31 +85,6 @@ TEST(WarpRules, SquareCentreOnAFacetPlaneStays) {
   EXPECT_EQ(w.centres, 0);
 }
 
-// The right prism over the polygon `xz` (in the x-z plane, counter-
-// clockwise) for y in [y0, y1]: the side quad of polygon edge i is facet i,
-// then the two caps.
-Domain3 prism_xz(const std::vector<std::array<double, 2>>& xz, double y0, double y1) {
-  Plc3 plc;
-  const int n = static_cast<int>(xz.size());
-  for (const double y : {y0, y1})
-    for (const auto& q : xz) plc.vertices.push_back({q[0], y, q[1]});
-  for (int i = 0; i < n; ++i) {
-    Facet3 f;
-    f.loops.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
-    plc.facets.push_back(f);
-  }
-  Facet3 lo, hi;
-  lo.loops.emplace_back();
-  hi.loops.emplace_back();
-  for (int i = 0; i < n; ++i) {
-    lo.loops[0].push_back(i);
-    hi.loops[0].push_back(n + i);
-  }
-  plc.facets.push_back(lo);
-  plc.facets.push_back(hi);
-  return make_domain(plc);
-}
-
 // The facet of d containing x (distance 0).
 int facet_at(const Domain3& d, Vec3 x) {
   for (int f = 0; f < static_cast<int>(d.plc.facets.size()); ++f)
@@ -129,7 +104,7 @@ TEST(WarpRules, RefusedMoveIsShortened) {
   // (clearance (0.01 + 1/64) / (1/16) = 0.41, against 0.16 unmoved).
   const OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const CornerSet corners(t, t.leaves());
-  const Domain3 d = prism_xz({{-1, -2}, {6, -2}, {6, -0.03}, {5, -0.03}, {5, 0.01}, {-1, 0.01}}, -1, 2);
+  const Domain3 d = make_domain(test::prism_xz({{-1, -2}, {6, -2}, {6, -0.03}, {5, -0.03}, {5, 0.01}, {-1, 0.01}}, -1, 2));
   const int f = facet_at(d, {0, 0.5, 0.01}), g = facet_at(d, {5.5, 0.5, -0.03});
   ASSERT_GE(f, 0);
   ASSERT_GE(g, 0);
