@@ -370,6 +370,34 @@ class Pass {
     return removed;
   }
 
+  // The border of a set of live triangles: its boundary edges, oriented as in
+  // their triangle (region order, then edge order; an edge is on the border
+  // when the triangle across it is missing or outside the set), and every
+  // vertex of the set, sorted and unique.
+  struct RegionBorder {
+    std::vector<std::array<int, 2>> edges;
+    std::vector<int> vertices;
+  };
+  RegionBorder border_of(const std::vector<int>& region) {
+    RegionBorder border;
+    std::vector<char>& in = seen_;
+    in.resize(tri_.size(), 0);
+    for (int r : region) in[std::size_t(r)] = 1;
+    for (int r : region) {
+      const auto tr = tri_[std::size_t(r)];
+      for (int e = 0; e < 3; ++e) {
+        const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)];
+        border.vertices.push_back(a);
+        const int u = across(a, b);
+        if (u < 0 || !in[std::size_t(u)]) border.edges.push_back({a, b});
+      }
+    }
+    for (int r : region) in[std::size_t(r)] = 0;
+    std::sort(border.vertices.begin(), border.vertices.end());
+    border.vertices.erase(std::unique(border.vertices.begin(), border.vertices.end()), border.vertices.end());
+    return border;
+  }
+
   // Stuck at t after coarsening: empty the first 4, 8, 16, ... triangles
   // around t (breadth first, any topology) of their inner vertices and
   // re-triangulate by the CDT of the boundary (cavity_cdt.hpp); the first
@@ -381,36 +409,21 @@ class Pass {
     const double base = angle_[std::size_t(t)];
     for (std::size_t size = 4;; size *= 2) {
       const std::vector<int> region = grow(t, size);
-      std::vector<char>& in = seen_;
-      in.resize(tri_.size(), 0);
-      for (int r : region) in[std::size_t(r)] = 1;
-      std::vector<std::array<int, 2>> boundary;
-      std::vector<int> verts, on_boundary;
-      for (int r : region) {
-        const auto tr = tri_[std::size_t(r)];
-        for (int e = 0; e < 3; ++e) {
-          const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)];
-          verts.push_back(a);
-          const int u = across(a, b);
-          if (u < 0 || !in[std::size_t(u)]) {
-            boundary.push_back({a, b});
-            on_boundary.push_back(a);
-            on_boundary.push_back(b);
-          }
-        }
+      const RegionBorder border = border_of(region);
+      std::vector<int> on_boundary;
+      for (const auto& [a, b] : border.edges) {
+        on_boundary.push_back(a);
+        on_boundary.push_back(b);
       }
-      for (int r : region) in[std::size_t(r)] = 0;
-      std::sort(verts.begin(), verts.end());
-      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
       std::sort(on_boundary.begin(), on_boundary.end());
       on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
       bool inputs_on_boundary = true;  // an input vertex is on dP, never inside a cavity (checked)
-      for (int v : verts)
+      for (int v : border.vertices)
         if (v < first_steiner_ && !std::binary_search(on_boundary.begin(), on_boundary.end(), v))
           inputs_on_boundary = false;
       if (inputs_on_boundary) {
         const std::vector<std::array<int, 3>> tris =
-            retriangulate_cavity(pts_, boundary, region.size(), verts.size() - on_boundary.size());
+            retriangulate_cavity(pts_, border.edges, region.size(), border.vertices.size() - on_boundary.size());
         double f = tris.empty() ? -1 : 4;
         for (const auto& x : tris)
           f = std::min(f, min_angle(pts_[std::size_t(x[0])], pts_[std::size_t(x[1])], pts_[std::size_t(x[2])]));
@@ -434,23 +447,13 @@ class Pass {
                 std::vector<std::array<int, 3>>& tris) {
     region = grow(t, size);
     if (region.size() < size) return -1;
-    std::vector<std::pair<int, int>> boundary;
-    std::vector<int> vertices;
-    for (int r : region) {
-      const auto tr = tri_[std::size_t(r)];
-      for (int e = 0; e < 3; ++e) {
-        const int a = tr[std::size_t(e)], b = tr[std::size_t((e + 1) % 3)];
-        vertices.push_back(a);
-        const int u = across(a, b);
-        if (u < 0 || std::find(region.begin(), region.end(), u) == region.end()) boundary.push_back({a, b});
-      }
-    }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const RegionBorder border = border_of(region);
+    const std::vector<std::array<int, 2>>& boundary = border.edges;
+    const std::vector<int>& vertices = border.vertices;
     const std::int64_t edges = (3 * std::int64_t(region.size()) + std::int64_t(boundary.size())) / 2;
     if (std::int64_t(vertices.size()) - edges + std::int64_t(region.size()) != 1) return -1;
     std::vector<int> cycle;
-    int cur = boundary[0].first;
+    int cur = boundary[0][0];
     for (std::size_t k = 0; k < boundary.size(); ++k) {
       cycle.push_back(cur);
       int next = -1, outs = 0;
