@@ -56,13 +56,16 @@ struct MeshRun {
   CheckReport check;
   LfsIntegral lfs;
   double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0;
+  // The summary's angle extremes (quality_report's min_angle.min/argmin and
+  // max_angle.max/argmax).
+  Stat min_angle, max_angle;
 };
 
 // quality_fields() (quality_fields.hpp) with the shape memo: the same values
 // bit for bit (triangle_quality_memo.hpp), a fraction of the time on a
 // quadtree mesh, whose triangles are mostly translated copies of a few shapes.
 std::vector<CellField> memo_quality_fields(const TriMesh2& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}}, {"min_angle", {}}, {"max_angle", {}}};
+  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_angle", {}, true}, {"max_angle", {}, true}};
   for (auto& f : fields) f.values.reserve(mesh.triangles.size());  // filled in order: no zeroing pass
   TriangleQualityMemo quality;
   const auto& v = mesh.vertices;
@@ -74,6 +77,26 @@ std::vector<CellField> memo_quality_fields(const TriMesh2& mesh) {
     fields[2].values.push_back(q.max_angle_deg);
   }
   return fields;
+}
+
+// The angle extremes of quality_report(mesh), taken from the fields of
+// memo_quality_fields instead of a second evaluation of every triangle: the
+// values are the same bits (both use TriangleQualityMemo) and the tie-break is
+// quality_report's (the first triangle attaining the extreme). Only min/argmin
+// of min_angle and max/argmax of max_angle are set.
+void angle_extremes(const std::vector<CellField>& fields, Stat& min_angle, Stat& max_angle) {
+  const std::vector<double>& lo = fields[1].values;
+  const std::vector<double>& hi = fields[2].values;
+  for (std::size_t e = 0; e < lo.size(); ++e) {
+    if (e == 0 || lo[e] < min_angle.min) {
+      min_angle.min = lo[e];
+      min_angle.argmin = static_cast<std::int64_t>(e);
+    }
+    if (e == 0 || hi[e] > max_angle.max) {
+      max_angle.max = hi[e];
+      max_angle.argmax = static_cast<std::int64_t>(e);
+    }
+  }
 }
 
 // One screen, labels padded to 11 columns as in `pqmesh info`.
@@ -103,14 +126,13 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
   const double c = refined ? kQuadMeshBoundC : kQuadMeshUnrefinedBoundC;
   const double theta0 = refined ? kQuadMeshBoundTheta0Degrees : kQuadMeshUnrefinedBoundTheta0Degrees;
   const double bound = quad_mesh_angle_bound(alpha.degrees(), run.options.refine_angle_degrees);
-  const QualityReport q = quality_report(mesh);
   std::cout << "alpha      " << alpha.describe(domain.pslg.source.first_id) << '\n'
             << "bound      min angle >= min(" << fmt(c) << " * alpha, " << fmt(theta0) << " deg) = " << fmt4(std::min(c * alpha.degrees(), theta0))
             << " deg" << (refined && alpha.degrees() >= 60 ? " (20 deg: alpha >= 60)" : "")
             << (refined ? "" : " (without refinement)") << '\n'
-            << "angles     min " << fmt4(q.min_angle.min) << " deg (triangle " << q.min_angle.argmin << "), max "
-            << fmt4(q.max_angle.max) << " deg (triangle " << q.max_angle.argmax << "); "
-            << (q.min_angle.min >= bound - 1e-9 ? "bound holds" : "BELOW THE BOUND") << '\n'
+            << "angles     min " << fmt4(run.min_angle.min) << " deg (triangle " << run.min_angle.argmin << "), max "
+            << fmt4(run.max_angle.max) << " deg (triangle " << run.max_angle.argmax << "); "
+            << (run.min_angle.min >= bound - 1e-9 ? "bound holds" : "BELOW THE BOUND") << '\n'
             << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
   // I(P) with the Euclidean lfs (pqmesh/lfs.hpp): up to a constant, a lower
   // bound on the triangles of any bounded-angle mesh of P, except across
@@ -209,7 +231,14 @@ int run_mesh(const std::vector<std::string>& argv) {
 
   WriteOptions write;
   write.format = run.format;
-  if (run.format == MeshFormat::Vtu) write.cell_fields = memo_quality_fields(run.result.mesh);
+  if (run.format == MeshFormat::Vtu) {
+    write.cell_fields = memo_quality_fields(run.result.mesh);
+    if (!quiet) angle_extremes(write.cell_fields, run.min_angle, run.max_angle);
+  } else if (!quiet) {
+    const QualityReport q = quality_report(run.result.mesh);
+    run.min_angle = q.min_angle;
+    run.max_angle = q.max_angle;
+  }
   write_mesh(run.result.mesh, run.output, write);
   if (!quiet) print_summary(domain, run);
   return kExitOk;

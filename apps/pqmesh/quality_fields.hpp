@@ -4,7 +4,8 @@
 // element by element straight into the three fields, without a per-element
 // record array: at a few million elements that array would be the process's
 // peak memory. The mesh must have valid indices (it passed check_mesh, or was
-// read and validated).
+// read and validated). The fields are display values, written to .vtu as
+// Float32 (CellField::single_precision): half the bytes of Float64.
 #include <cstddef>
 #include <vector>
 
@@ -15,7 +16,7 @@
 namespace pqmesh::cli {
 
 inline std::vector<CellField> quality_fields(const TriMesh2& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}}, {"min_angle", {}}, {"max_angle", {}}};
+  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_angle", {}, true}, {"max_angle", {}, true}};
   for (auto& f : fields) f.values.resize(mesh.triangles.size());
   const auto& v = mesh.vertices;
   for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
@@ -30,7 +31,7 @@ inline std::vector<CellField> quality_fields(const TriMesh2& mesh) {
 }
 
 inline std::vector<CellField> quality_fields(const TetMesh3& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}}, {"min_dihedral", {}}, {"max_dihedral", {}}};
+  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_dihedral", {}, true}, {"max_dihedral", {}, true}};
   for (auto& f : fields) f.values.resize(mesh.tetrahedra.size());
   const auto& v = mesh.vertices;
   for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) {

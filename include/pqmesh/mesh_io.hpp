@@ -73,6 +73,12 @@ MeshFormat mesh_format_from_path(const std::string& path, bool msh22 = false);
 struct CellField {
   std::string name;  // non-empty, unique, not "marker"; no '"', '<', '>', '&'
   std::vector<double> values;
+  // Vtu: store the values as Float32 (half the bytes) instead of Float64. For
+  // display values such as quality measures: each value is rounded to the
+  // nearest float (about 7 significant digits); a value beyond the float
+  // range, an infinity included, is written as +-FLT_MAX (readers reject
+  // non-finite values).
+  bool single_precision = false;
 };
 
 struct WriteOptions {

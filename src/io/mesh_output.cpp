@@ -93,6 +93,14 @@ BufferedWriter& BufferedWriter::put_double(double value) {
   return *this;
 }
 
+BufferedWriter& BufferedWriter::put_float(float value) {
+  reserve(32);
+  auto [end, ec] = std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 32, value);
+  (void)ec;
+  used_ = static_cast<std::size_t>(end - buffer_.data());
+  return *this;
+}
+
 BufferedWriter& BufferedWriter::put_fixed(double value, int decimals) {
   reserve(64);
   // Large magnitudes fall back to the shortest form, which always fits.
@@ -103,6 +111,13 @@ BufferedWriter& BufferedWriter::put_fixed(double value, int decimals) {
   (void)ec;
   used_ = static_cast<std::size_t>(end - buffer_.data());
   return *this;
+}
+
+char* BufferedWriter::claim(std::size_t n) {
+  reserve(n);
+  char* at = buffer_.data() + used_;
+  used_ += n;
+  return at;
 }
 
 void BufferedWriter::put_bytes(const void* data, std::size_t size) {

@@ -52,10 +52,16 @@ class BufferedWriter {
   BufferedWriter& put_int(std::int64_t value);
   // Shortest decimal form that reads back to the same double.
   BufferedWriter& put_double(double value);
+  // Shortest decimal form that reads back to the same float.
+  BufferedWriter& put_float(float value);
   // Fixed-point with `decimals` digits (used for SVG coordinates only).
   BufferedWriter& put_fixed(double value, int decimals);
   // Raw bytes in little-endian order (binary VTU).
   void put_bytes(const void* data, std::size_t size);
+  // n bytes at the end of the buffer, counted as written: the caller fills
+  // all of them before the next call on this writer (binary VTU arrays are
+  // produced in place this way, without a staging copy).
+  char* claim(std::size_t n);
   template <class T>
   void put_le(T value);
   // Writes everything buffered so far to the FILE.

@@ -2,9 +2,11 @@
 // headers. Only the elements are written (VTK type 5 triangle, 10 tetra), as
 // one cell block; boundary edges/faces are not part of a .vtu. Arrays:
 //   PointData "vertex_marker" (Int32, when present)
-//   CellData  "marker" (Int32, when present), then every CellField (Float64)
-//   Points (Float64 x3, z = 0 in 2D); Cells connectivity/offsets (Int64),
-//   types (UInt8).
+//   CellData  "marker" (Int32, when present), then every CellField (Float64,
+//             or Float32 when the field asks for single precision)
+//   Points (Float64 x3, z = 0 in 2D); Cells connectivity/offsets (Int32 when
+//   every offset, at most nodes * cells, fits in 31 bits, else Int64; VTK XML
+//   allows any integer type there), types (UInt8).
 // binary = true: every array is appended raw after "_" in <AppendedData>,
 // each preceded by its byte count as UInt64; false: inline ASCII.
 // VTK's tetrahedron has positive volume for pqmesh's orientation (its
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,13 +30,14 @@ namespace pqmesh::detail {
 
 namespace {
 
-enum class Scalar { Int32, Int64, UInt8, Float64 };
+enum class Scalar { Int32, Int64, UInt8, Float32, Float64 };
 
 const char* vtk_name(Scalar s) {
   switch (s) {
     case Scalar::Int32: return "Int32";
     case Scalar::Int64: return "Int64";
     case Scalar::UInt8: return "UInt8";
+    case Scalar::Float32: return "Float32";
     case Scalar::Float64: return "Float64";
   }
   return "";
@@ -44,9 +48,18 @@ std::size_t scalar_size(Scalar s) {
     case Scalar::Int32: return 4;
     case Scalar::Int64: return 8;
     case Scalar::UInt8: return 1;
+    case Scalar::Float32: return 4;
     case Scalar::Float64: return 8;
   }
   return 0;
+}
+
+// The Float32 stored for a single-precision field value (CellField): the
+// nearest float, except that a value beyond the float range (an infinity
+// included) becomes +-FLT_MAX, which the readers accept. NaN stays NaN.
+float single_precision(double v) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return static_cast<float>(std::clamp(v, -kMax, kMax));
 }
 
 // One array to write: `count` values produced by value(i).
@@ -57,54 +70,77 @@ struct ArraySpec {
   std::size_t count;  // number of scalars (tuples * components)
 };
 
+// Writes `items` items of Per scalars of type S each, as raw native bytes:
+// fill(w, i) stores the Per scalars of item i at w. Each item goes straight
+// into the writer's buffer (claimed in blocks of about 64 KiB), so neither an
+// array-sized copy nor a staging copy is made.
+template <class S, std::size_t Per, class Fill>
+void put_items(std::size_t items, Fill fill, BufferedWriter& out) {
+  constexpr std::size_t kItemBytes = sizeof(S) * Per;
+  constexpr std::size_t kBlockItems = std::max<std::size_t>(1, (std::size_t{1} << 16) / kItemBytes);
+  for (std::size_t first = 0; first < items; first += kBlockItems) {
+    const std::size_t n = std::min(kBlockItems, items - first);
+    char* bytes = out.claim(kItemBytes * n);
+    for (std::size_t i = first; i < first + n; ++i, bytes += kItemBytes) {
+      S item[Per];
+      fill(item, i);
+      std::memcpy(bytes, item, kItemBytes);  // the buffer has no alignment for S
+    }
+  }
+}
+
 // Binary (appended, raw) array `array` (numbering as in write_body) on a
-// little-endian machine: the bytes put_value(array, i, true) would write for
-// every i, produced in staged blocks instead of one call per scalar. Arrays
-// already stored in the file's layout go out in one piece.
+// little-endian machine: the bytes put_value(array, spec, i, true) would
+// write for every i, produced block by block in the writer's buffer (put_items).
+// Arrays already stored in the file's layout (markers, Float64 fields, Int32
+// connectivity) go out straight from the mesh in one piece.
 template <class M>
-void put_raw_array(const M& mesh, const WriteOptions& options, int array, std::size_t count, BufferedWriter& out) {
+void put_raw_array(const M& mesh, const WriteOptions& options, int array, const ArraySpec& spec,
+                   BufferedWriter& out) {
   using T = MeshTraits<M>;
   constexpr int D = T::dim;
   constexpr int N = T::cell_nodes;
   const auto& cells = T::cells(mesh);
   const int num_fields = static_cast<int>(options.cell_fields.size());
-  // Int32 markers (int is 32 bits on every platform we build for; checked).
+  const std::size_t count = spec.count;
+  // Int32 markers and indices (int is 32 bits on every platform we build for;
+  // checked), a cell being N ints with no padding.
   static_assert(sizeof(int) == 4);
+  static_assert(sizeof(cells[0]) == 4 * N);
   if (count == 0) return;
   if (array == 0) return out.put_bytes(mesh.vertex_markers.data(), 4 * count);
   if (array == 1) return out.put_bytes(T::cell_markers(mesh).data(), 4 * count);
-  if (array < 2 + num_fields)
-    return out.put_bytes(options.cell_fields[static_cast<std::size_t>(array - 2)].values.data(), 8 * count);
-  // Staged arrays: fill a block of scalars, write it, repeat.
-  constexpr std::size_t kStage = 1 << 13;  // scalars per block (64 KiB of 8-byte values)
+  if (array < 2 + num_fields) {
+    const std::vector<double>& values = options.cell_fields[static_cast<std::size_t>(array - 2)].values;
+    if (spec.scalar == Scalar::Float64) return out.put_bytes(values.data(), 8 * count);
+    return put_items<float, 1>(count, [&](float* w, std::size_t i) { w[0] = single_precision(values[i]); }, out);
+  }
   const int rest = array - 2 - num_fields;
-  if (rest == 3) {  // types: one byte per cell
-    std::vector<std::uint8_t> block(std::min(count, kStage * 8), static_cast<std::uint8_t>(D == 2 ? 5 : 10));
-    for (std::size_t i = 0; i < count; i += block.size())
-      out.put_bytes(block.data(), std::min(block.size(), count - i));
-    return;
+  if (rest == 0) {  // points: x, y, z (z = 0 in 2D)
+    return put_items<double, 3>(count / 3, [&](double* w, std::size_t i) {
+      for (int k = 0; k < 3; ++k) w[k] = coord(mesh.vertices[i], k);
+    }, out);
   }
-  // Points (3 scalars per vertex), connectivity (N per cell) and offsets (1 per
-  // cell) are staged by whole items: `per` scalars for each of `items` items.
-  const std::size_t per = rest == 0 ? 3 : (rest == 1 ? N : 1);
-  const std::size_t items = count / per, block_items = kStage / per;
-  std::vector<std::uint64_t> block(block_items * per);
-  for (std::size_t first = 0; first < items; first += block_items) {
-    const std::size_t n = std::min(block_items, items - first);
-    std::uint64_t* w = block.data();
-    for (std::size_t i = first; i < first + n; ++i) {
-      if (rest == 0) {
-        for (int k = 0; k < 3; ++k) w[k] = std::bit_cast<std::uint64_t>(coord(mesh.vertices[i], k));
-      } else if (rest == 1) {
-        for (int k = 0; k < N; ++k)
-          w[k] = static_cast<std::uint64_t>(static_cast<std::int64_t>(cells[i][static_cast<std::size_t>(k)]));
-      } else {
-        w[0] = static_cast<std::uint64_t>((i + 1) * N);
-      }
-      w += per;
-    }
-    out.put_bytes(block.data(), 8 * n * per);
+  const bool wide = spec.scalar == Scalar::Int64;
+  if (rest == 1) {  // connectivity
+    if (!wide) return out.put_bytes(cells.data(), 4 * count);
+    return put_items<std::int64_t, N>(count / N, [&](std::int64_t* w, std::size_t i) {
+      for (int k = 0; k < N; ++k) w[k] = cells[i][static_cast<std::size_t>(k)];
+    }, out);
   }
+  if (rest == 2) {  // offsets: the end of cell i's nodes
+    if (wide)
+      return put_items<std::int64_t, 1>(count, [&](std::int64_t* w, std::size_t i) {
+        w[0] = static_cast<std::int64_t>((i + 1) * N);
+      }, out);
+    return put_items<std::int32_t, 1>(count, [&](std::int32_t* w, std::size_t i) {
+      w[0] = static_cast<std::int32_t>((i + 1) * N);
+    }, out);
+  }
+  // types: one byte per cell
+  return put_items<std::uint8_t, 1>(count, [&](std::uint8_t* w, std::size_t) {
+    w[0] = static_cast<std::uint8_t>(D == 2 ? 5 : 10);
+  }, out);
 }
 
 template <class M>
@@ -117,47 +153,60 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
   const std::size_t nv = mesh.vertices.size(), nc = cells.size();
   const bool binary = options.binary;
 
-  // Value of scalar i of each array, in the order they are written.
-  auto put_value = [&](int array, std::size_t i, bool raw) {
-    auto emit_int = [&](std::int64_t v, Scalar s) {
+  // Scalar i of each array, in the order they are written, as spec.scalar.
+  auto put_value = [&](int array, const ArraySpec& spec, std::size_t i, bool raw) {
+    auto emit_int = [&](std::int64_t v) {
       if (!raw) {
         out.put_int(v);
-      } else if (s == Scalar::Int32) {
+      } else if (spec.scalar == Scalar::Int32) {
         out.put_le(static_cast<std::int32_t>(v));
-      } else if (s == Scalar::Int64) {
+      } else if (spec.scalar == Scalar::Int64) {
         out.put_le(v);
       } else {
         out.put_le(static_cast<std::uint8_t>(v));
       }
     };
     auto emit_real = [&](double v) {
-      if (raw)
+      if (spec.scalar == Scalar::Float32) {
+        if (raw)
+          out.put_le(single_precision(v));
+        else
+          out.put_float(single_precision(v));
+      } else if (raw) {
         out.put_le(v);
-      else
+      } else {
         out.put_double(v);
+      }
     };
     const int num_fields = static_cast<int>(options.cell_fields.size());
     // Array numbering: 0 vertex_marker, 1 marker, 2..2+F-1 fields, then
     // points, connectivity, offsets, types.
-    if (array == 0) return emit_int(mesh.vertex_markers[i], Scalar::Int32);
-    if (array == 1) return emit_int(markers[i], Scalar::Int32);
+    if (array == 0) return emit_int(mesh.vertex_markers[i]);
+    if (array == 1) return emit_int(markers[i]);
     if (array < 2 + num_fields) return emit_real(options.cell_fields[array - 2].values[i]);
     const int rest = array - 2 - num_fields;
     if (rest == 0) return emit_real(coord(mesh.vertices[i / 3], static_cast<int>(i % 3)));
-    if (rest == 1) return emit_int(cells[i / N][i % N], Scalar::Int64);
-    if (rest == 2) return emit_int(static_cast<std::int64_t>((i + 1) * N), Scalar::Int64);
-    return emit_int(D == 2 ? 5 : 10, Scalar::UInt8);
+    if (rest == 1) return emit_int(cells[i / N][i % N]);
+    if (rest == 2) return emit_int(static_cast<std::int64_t>((i + 1) * N));
+    return emit_int(D == 2 ? 5 : 10);
   };
 
+  // Connectivity and offsets: Int32 when the largest offset, N * nc, fits
+  // (every connectivity entry is an int below nv, so it fits then too).
+  const Scalar index_scalar =
+      static_cast<std::uint64_t>(N) * nc <= static_cast<std::uint64_t>(INT32_MAX) ? Scalar::Int32 : Scalar::Int64;
   std::vector<std::pair<int, ArraySpec>> arrays;  // (array number, spec)
   if (!mesh.vertex_markers.empty()) arrays.push_back({0, {"vertex_marker", Scalar::Int32, 1, nv}});
   if (!markers.empty()) arrays.push_back({1, {"marker", Scalar::Int32, 1, nc}});
-  for (std::size_t f = 0; f < options.cell_fields.size(); ++f)
-    arrays.push_back({2 + static_cast<int>(f), {options.cell_fields[f].name, Scalar::Float64, 1, nc}});
+  for (std::size_t f = 0; f < options.cell_fields.size(); ++f) {
+    const CellField& field = options.cell_fields[f];
+    arrays.push_back(
+        {2 + static_cast<int>(f), {field.name, field.single_precision ? Scalar::Float32 : Scalar::Float64, 1, nc}});
+  }
   const int base = 2 + static_cast<int>(options.cell_fields.size());
   arrays.push_back({base, {"Points", Scalar::Float64, 3, 3 * nv}});
-  arrays.push_back({base + 1, {"connectivity", Scalar::Int64, 1, N * nc}});
-  arrays.push_back({base + 2, {"offsets", Scalar::Int64, 1, nc}});
+  arrays.push_back({base + 1, {"connectivity", index_scalar, 1, N * nc}});
+  arrays.push_back({base + 2, {"offsets", index_scalar, 1, nc}});
   arrays.push_back({base + 3, {"types", Scalar::UInt8, 1, nc}});
 
   std::vector<std::uint64_t> offsets;
@@ -177,7 +226,7 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
     }
     out.put(" format=\"ascii\">\n");
     for (std::size_t i = 0; i < spec.count; ++i) {
-      put_value(arrays[k].first, i, false);
+      put_value(arrays[k].first, spec, i, false);
       out.put((i + 1) % 12 == 0 || i + 1 == spec.count ? '\n' : ' ');
     }
     out.put("</DataArray>\n");
@@ -211,9 +260,9 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
     for (const auto& [number, spec] : arrays) {
       out.put_le(static_cast<std::uint64_t>(spec.count * scalar_size(spec.scalar)));
       if constexpr (std::endian::native == std::endian::little) {
-        put_raw_array(mesh, options, number, spec.count, out);
+        put_raw_array(mesh, options, number, spec, out);
       } else {
-        for (std::size_t i = 0; i < spec.count; ++i) put_value(number, i, true);
+        for (std::size_t i = 0; i < spec.count; ++i) put_value(number, spec, i, true);
       }
     }
     out.put("\n</AppendedData>\n");

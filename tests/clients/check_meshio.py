@@ -13,7 +13,7 @@ Expected values come from tests/unit/io_mesh/sample_meshes.hpp:
   cube:   8 vertices, 6 tetrahedra with markers 1 2 3 0 -5 2, 12 boundary
           triangles with side markers 1..6 (two each), vertex markers i % 3;
           Gmsh physical tags: 1, 2, 3, 0 -> 3 + 1 = 4, -5 -> 3 + 1 + 5 = 9.
-  quality field: element index + 0.5.
+  quality field: element index + 0.5; quality32: the same values as Float32.
 """
 import os
 import subprocess
@@ -127,8 +127,9 @@ def main():
     for stem, spec in (("square", SQUARE), ("cube", CUBE)):
         path = lambda ext: os.path.join(samples, stem + ext)  # noqa: E731
         for ext in (".vtu", "_ascii.vtu"):
-            check_file(stem + ext, path(ext), spec, "marker", has_faces=False, vertex_key="vertex_marker",
-                       field="quality")
+            for field in ("quality", "quality32"):  # Float64 and Float32 (single_precision) cell data
+                check_file(stem + ext, path(ext), spec, "marker", has_faces=False, vertex_key="vertex_marker",
+                           field=field)
         for ext in (".msh", "_22.msh"):
             check_file(stem + ext, path(ext), spec, "gmsh:physical", "gmsh:physical", vertex_key="vertex_marker",
                        physical=True)

@@ -23,7 +23,9 @@ void write_all(const M& mesh, const std::filesystem::path& dir, const std::strin
   // A field that differs per element: the element index plus one half.
   pqmesh::CellField field{"quality", {}};
   for (std::size_t i = 0; i < num_cells; ++i) field.values.push_back(static_cast<double>(i) + 0.5);
-  options.cell_fields = {field};
+  // The same values again as Float32 (exact in a float): meshio must read both.
+  pqmesh::CellField field32{"quality32", field.values, true};
+  options.cell_fields = {field, field32};
   pqmesh::write_mesh(mesh, (dir / (stem + ".vtu")).string(), options);
   options.binary = false;
   pqmesh::write_mesh(mesh, (dir / (stem + "_ascii.vtu")).string(), options);
