@@ -65,7 +65,11 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
       const GridPoint& a = std::min(ring[i], ring[i1]);
       const GridPoint& b = std::max(ring[i], ring[i1]);
       const VertexKey key{VertexKind::FacetCrossing, a, b, plane.facet()};
-      walk.push_back({book.id(key, [&] { return plane.crossing(xyz[i], xyz[i1]); }), true});
+      // End points as F's cut sees them (a Fig. 4.7 copy for F, warp_table.hpp).
+      const auto end = [&](std::size_t n) {
+        return warps != nullptr ? warps->at_for_cut(ring[n], plane.facet(), xyz[n]) : xyz[n];
+      };
+      walk.push_back({book.id(key, [&] { return plane.crossing(end(i), end(i1)); }), true});
     }
   }
   // A line meets the convex ring in one run of points beyond it, and the walk

@@ -211,8 +211,12 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       const FacetPlane& pl = *planes[t];
       const GridPoint& a = std::min(ring[i], ring[i1]);
       const GridPoint& b = std::max(ring[i], ring[i1]);
+      // End points as this facet's cut sees them (a Fig. 4.7 copy, warp_table.hpp).
+      const auto end = [&](std::size_t n) {
+        return warps != nullptr ? warps->at_for_cut(ring[n], pl.facet(), xyz[n]) : xyz[n];
+      };
       x.id = book.id(VertexKey{VertexKind::FacetCrossing, a, b, pl.facet()},
-                     [&] { return pl.crossing(xyz[i], xyz[i1]); });
+                     [&] { return pl.crossing(end(i), end(i1)); });
       x.xyz = book.point(x.id);
       r.push_back(x);
       mark_if_out();

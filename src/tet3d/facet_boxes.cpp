@@ -445,12 +445,12 @@ class Assembler {
     job_squares(tree_, corners_, job_box_, squares);
     auto report_square = [&](const FaceSquare& sq) {
       for (const GridPoint& g : square_ring(sq, corners_))
-        if (warps_->find(g) != nullptr) bad_.push_back(g);
+        if (warps_->moved(g)) bad_.push_back(g);
     };
     for (const int v : vertices) {
       const VertexKey& k = book_.key(v);
       for (const GridPoint& g : {k.p, k.q})
-        if (warps_->find(g) != nullptr) bad_.push_back(g);
+        if (warps_->moved(g)) bad_.push_back(g);
       if (k.kind == VertexKind::Grid || k.kind == VertexKind::Warped || k.kind == VertexKind::PVertex ||
           k.kind == VertexKind::EdgeMidpoint)
         continue;
@@ -676,7 +676,8 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   // the result and the final pass is skipped.
   std::unique_ptr<Assembler> done;
   if (options.warp) {
-    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs));
+    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), nullptr,
+                              options.reflex_copies);
     release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
@@ -697,7 +698,8 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
       ++rebuilds;
       for (const GridPoint& g : trial->bad()) frozen.insert(g);
       trial.reset();
-      warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen);
+      warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
+                                options.reflex_copies);
       release_free_heap();
     }
   }
@@ -713,6 +715,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   out.warp_bisected = warps.bisected;
   out.warp_fallback = warps.fallback;
   out.warp_reflex_left = warps.reflex_left;
+  out.warp_reflex_copied = warps.reflex_copied;
   out.warp_crowded_left = warps.crowded_left;
   out.warp_on_plane = warps.on_plane;
   out.warp_inverting_left = warps.frozen_left;

@@ -85,6 +85,11 @@ struct BoxMeshOptions {
   // §4.3 warping (both passes) for the box vertices of every kind (warp.hpp;
   // rules and counts there).
   bool warp = false;
+  // Fig. 4.7's copies per facet for box vertices in a reflex edge's slot
+  // (warp.hpp); false: such a vertex stays in place (counted in
+  // warp_reflex_left), the behaviour before they were built (kept for the
+  // comparison in reflex_slot_copies_test.cpp).
+  bool reflex_copies = true;
 };
 
 struct BoxMesh {
@@ -94,11 +99,12 @@ struct BoxMesh {
   std::vector<std::int32_t> tet_job;    // per tetrahedron: index into the jobs
   FacetBoxStats stats;
   // Second warping pass (warp.hpp): vertices moved (of which onto an acute
-  // wedge's bisector), and left in place: side conflict, reflex edge
-  // (Fig. 4.7 copies not done), crowded, would invert a tetrahedron (frozen,
-  // facet_boxes.cpp); not moved: exactly on a facet plane.
+  // wedge's bisector), and left in place: side conflict, in a reflex edge's
+  // slot with a Fig. 4.7 copy refused, crowded, would invert a tetrahedron
+  // (frozen, facet_boxes.cpp); not moved: exactly on a facet plane. Slot
+  // vertices with both Fig. 4.7 copies built (not among `warped`).
   std::int64_t warped = 0, warp_conflicts = 0, warp_bisected = 0, warp_fallback = 0, warp_reflex_left = 0, warp_crowded_left = 0,
-               warp_on_plane = 0, warp_inverting_left = 0;
+               warp_on_plane = 0, warp_inverting_left = 0, warp_reflex_copied = 0;
   // First pass (box edges near P edges): vertices moved by it (among
   // `warped`), and first-pass moves not made (box edge parallel to E).
   std::int64_t warp_first_pass = 0, warp_parallel_left = 0;

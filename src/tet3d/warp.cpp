@@ -71,7 +71,7 @@ double facet_distance(const Domain3& domain, int facet, Vec3 x) {
 
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
-                            const std::unordered_set<GridPoint, GridPointHash>* frozen) {
+                            const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies) {
   WarpTable table;
   std::map<int, std::unique_ptr<FacetPlane>> planes;
   auto plane_of = [&](int f) -> const FacetPlane& {
@@ -170,9 +170,12 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     const bool first = !seen.empty();
     // Second pass from `from`; sets the facet of the key, whether the
     // bisector rule was used, and the reason a close vertex stays (0: none,
-    // 1: crowded, 2: reflex).
+    // 1: crowded, 2: in a reflex edge's slot, copies per facet below; then
+    // `slot_other` is the slot's second facet, `facet` its first).
+    int slot_other = -1;
     auto second_pass = [&](Vec3 from, int& facet, bool& bisect, int& left) {
       facet = -1;
+      slot_other = -1;
       bisect = false;
       left = 0;
       std::vector<int> close;
@@ -203,9 +206,10 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         return from - (dot(m, from - ec->a()) / dot(m, m)) * m;
       }
       if (!ec->convex() && sf == Sign::Positive && sg == Sign::Positive) {
-        // In the thin exterior slot of a reflex edge: Fig. 4.7's copies per
-        // facet are not done.
+        // In the thin exterior slot of a reflex edge: Fig. 4.7's copies,
+        // one per facet (built by the caller).
         left = 2;
+        slot_other = close[1];
         return from;
       }
       // Elsewhere near E (outside a convex edge, or on one side of each
@@ -228,9 +232,11 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // decides the crossing's dP membership and order, cut_square_edge.hpp),
     // against w's current (possibly moved) position. Sides of the planes
     // are kept, so the same segments are crossed before and after.
-    auto accept = [&](Vec3 y) {
+    // `skip` (a Fig. 4.7 copy's partner facet, else -1): a facet whose side
+    // is not checked.
+    auto accept_except = [&](Vec3 y, int skip) {
       for (const int f : c.facets)
-        if (plane_of(f).side(y) != plane_of(f).side(x0)) return false;
+        if (f != skip && plane_of(f).side(y) != plane_of(f).side(x0)) return false;
       for (const int e : edges) {
         const EdgeCone& ec = cone_of(e);
         for (const GridPoint& w : c.neighbours) {
@@ -244,6 +250,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       }
       return true;
     };
+    auto accept = [&](Vec3 y) { return accept_except(y, -1); };
     // How far z is from what warping moves v away from, as fractions of the
     // targets, each capped at 1: h/16 from each facet of v's boxes, h/8
     // between each P edge between two of them and each ring segment [z, w]
@@ -266,7 +273,42 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     bool bisect = false;
     const Vec3 y = second_pass(x, facet, bisect, left);
     table.crowded_left += left == 1;
-    table.reflex_left += left == 2;
+    // Without copies (the behaviour before them): v keeps its first-pass
+    // move only, counted.
+    table.reflex_left += left == 2 && !reflex_copies;
+    if (left == 2 && reflex_copies) {
+      // Fig. 4.7 (§4.3): v lies in the exterior slot of reflex edge E,
+      // within h/16 of both F and G. v is outside P (beyond both planes),
+      // never a mesh vertex; it matters only as the end of ring segments cut
+      // by F (in the boxes on F's side and in E's box) or by G. One copy per
+      // facet, each warped h/16 away from its own facet along its normal
+      // (from the first pass's position, else from the prewarped point, else
+      // 1/2 .. 1/16 of that move), accepted by the rules above except the
+      // side of the partner facet: the copy for F serves only F's cuts,
+      // whose decisions (F's side of v, E's line against [v, w]) it keeps;
+      // every decision stays on the prewarped point, which has no entry.
+      if (frozen != nullptr && frozen->count(c.p) != 0) {
+        ++table.frozen_left;
+        continue;
+      }
+      int built = 0;
+      for (const int f : {facet, slot_other}) {
+        const int partner = f == facet ? slot_other : facet;
+        const FacetPlane& plane = plane_of(f);
+        const Vec3 away = ((plane.side(x0) == Sign::Positive ? 1.0 : -1.0) * h / 16) * plane.normal();
+        std::vector<Vec3> targets = {x + away};
+        if (first) targets.push_back(x0 + away);
+        for (double t = 0.5; t >= 1.0 / 16; t /= 2) targets.push_back(x0 + t * away);
+        for (const Vec3& z : targets)
+          if (accept_except(z, partner)) {
+            table.insert_copy(c.p, f, z);
+            ++built;
+            break;
+          }
+      }
+      ++(built == 2 ? table.reflex_copied : table.reflex_left);
+      continue;
+    }
     auto same = [](Vec3 p, Vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; };
     if (same(y, x0)) continue;
     // Fallbacks when the full move is refused: the first pass alone, then

@@ -23,8 +23,10 @@
 //   * two close facets F, G of one P edge E, convex (acute interior wedge),
 //     v strictly on P's side of both: orthogonal projection onto the plane
 //     bisecting the wedge ((n_F - n_G)·(x - a) = 0, a on E);
-//   * both close, v in the exterior slot of a reflex edge (Fig. 4.7: one copy
-//     per facet; not done): left, counted (`reflex_left`);
+//   * both close, v in the exterior slot of a reflex edge (Fig. 4.7): no
+//     entry, one copy per facet (warp_table.hpp), each h/16 along its own
+//     facet's normal, away, accepted by the rules below except the side of
+//     the partner facet (`reflex_copied`; a copy refused: `reflex_left`);
 //   * both close elsewhere near E: h/16 along the sum of the two normals
 //     oriented to v's sides (gap filled); close to two facets without a
 //     common edge or to three: left, counted (`crowded_left`).
@@ -96,9 +98,11 @@ struct WarpCandidate {
   std::vector<std::pair<GridPoint, GridPoint>> box_edges;
 };
 // `frozen` (may be null): points never moved (counted in frozen_left when they would be).
+// `reflex_copies` false: no Fig. 4.7 copies, a slot vertex stays (reflex_left).
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
-                            const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr);
+                            const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
+                            bool reflex_copies = true);
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {

@@ -3,8 +3,20 @@
 // point -> moved coordinates, with the counts of the moves not made. Every
 // mesh vertex named by a grid point resolves through it (point_book.hpp), so
 // all boxes sharing a point see one moved copy.
+//
+// Fig. 4.7 copies (§4.3, "the special sharing case"): a box vertex in the
+// thin exterior slot of a reflex edge E, within h/16 of both its facets F
+// and G, has no single entry but up to one copy per facet, each warped h/16
+// away from its own facet. Such a vertex is outside P (beyond both planes),
+// so it is never a mesh vertex: a copy serves only as the end point of ring
+// segments cut by its facet (the crossing of F is constructed from F's copy,
+// of G from G's copy), i.e. the portion for the box on F's side is used for
+// P ∧ b and ignored for P ∧ c. Every decision (sides, orders) is still made
+// on the prewarped point, which each copy leaves unchanged for its facet
+// (warp.cpp).
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 
 #include "pqmesh/vec.hpp"
 #include "tet3d/grid_point.hpp"
@@ -23,10 +35,35 @@ class WarpTable {
     return it == map_.end() ? nullptr : &it->second;
   }
   bool insert(const GridPoint& p, const Warp& w) { return map_.try_emplace(p, w).second; }
+  // Fig. 4.7: the copy of p warped for facet f (p has no entry then).
+  bool insert_copy(const GridPoint& p, int facet, Vec3 at) { return copies_.try_emplace({p, facet}, at).second; }
+  const Vec3* find_copy(const GridPoint& p, int facet) const {
+    const auto it = copies_.find({p, facet});
+    return it == copies_.end() ? nullptr : &it->second;
+  }
+  // The coordinates of ring point p as an end point of a segment cut by
+  // facet f: its copy for f if built, else `current` (its entry or the
+  // prewarped point, as the caller resolved it).
+  Vec3 at_for_cut(const GridPoint& p, int facet, Vec3 current) const {
+    if (copies_.empty()) return current;
+    const Vec3* c = find_copy(p, facet);
+    return c != nullptr ? *c : current;
+  }
+  // Whether p was moved at all (an entry or a copy): the points a freeze
+  // round (facet_boxes.cpp) may blame.
+  bool moved(const GridPoint& p) const {
+    if (map_.count(p) != 0) return true;
+    if (copies_.empty()) return false;
+    for (const auto& [key, at] : copies_)
+      if (key.first == p) return true;
+    return false;
+  }
   std::size_t size() const { return map_.size(); }
+  std::size_t copy_count() const { return copies_.size(); }
   std::int64_t conflicts = 0;     // left: the move would change a side decision
   std::int64_t bisected = 0;      // moved onto the bisector of an acute wedge (among size())
-  std::int64_t reflex_left = 0;   // left: close to both facets of a reflex edge (Fig. 4.7 copies not done)
+  std::int64_t reflex_left = 0;   // close to both facets of a reflex edge, in its slot, and some copy not built (Fig. 4.7)
+  std::int64_t reflex_copied = 0; // close to both facets of a reflex edge, in its slot: both Fig. 4.7 copies built
   std::int64_t crowded_left = 0;  // left: close to two facets outside P / without a common edge / to three
   std::int64_t on_plane = 0;      // not moved: exactly on a facet plane
   std::int64_t first_pass = 0;     // moved with a first-pass part (among size())
@@ -38,7 +75,13 @@ class WarpTable {
   std::int64_t shortened = 0;     // moved by 1/2..1/16 of a refused second-pass move (among size())
 
  private:
+  struct CopyHash {
+    std::size_t operator()(const std::pair<GridPoint, int>& k) const {
+      return GridPointHash{}(k.first) * 31u + static_cast<std::size_t>(k.second + 1);
+    }
+  };
   std::unordered_map<GridPoint, Warp, GridPointHash> map_;
+  std::unordered_map<std::pair<GridPoint, int>, Vec3, CopyHash> copies_;  // Fig. 4.7, (p, facet) -> coordinates
 };
 
 }  // namespace pqmesh::tet3d
