@@ -320,6 +320,8 @@ class Assembler {
   }
   void collect_bad() { collect_ = true; }
   const std::vector<GridPoint>& bad() const { return bad_; }
+  // The jobs of the inverted tetrahedra (collect mode), in order, repeats allowed.
+  const std::vector<std::int32_t>& bad_jobs() const { return bad_jobs_; }
 
   void count_squares() {
     out_.stats.squares_nothing = squares_.count(SquareCase::Nothing);
@@ -421,7 +423,10 @@ class Assembler {
       // A warp bent a face past the apex: the moved grid points this
       // tetrahedron depends on are reported, frozen and the mesh rebuilt
       // (mesh_boxes); none found: a bug, thrown below.
-      if (report_moved({a, b, c, d})) return;
+      if (report_moved({a, b, c, d})) {
+        bad_jobs_.push_back(job_);
+        return;
+      }
     }
     if (s != Sign::Positive)
       throw InternalError(std::string("tet3d: ") + what + " tetrahedron of leaf " + std::to_string(leaf) + " is " +
@@ -546,6 +551,7 @@ class Assembler {
   BoxJob job_box_;
   bool collect_ = false;
   std::vector<GridPoint> bad_;  // moved grid points of inverted tetrahedra (collect_ mode)
+  std::vector<std::int32_t> bad_jobs_;
   PointBook book_;
   SquareDispatcher squares_{tree_, corners_, domain_, book_, warps_};
   BoxMesh out_;
@@ -687,6 +693,8 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     // candidates (about half the peak memory of a run) are not kept through
     // the trial passes: a rebuild makes them again (same list).
     std::unordered_set<GridPoint, GridPointHash> frozen;
+    std::vector<EdgeBoxBounds> edge_boxes;
+    std::set<std::int32_t> shifted_jobs;
     for (int round = 0; round < 16; ++round) {
       auto trial = std::make_unique<Assembler>(tree, corners, domain, &warps);
       trial->collect_bad();
@@ -696,10 +704,22 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
         break;
       }
       ++rebuilds;
-      for (const GridPoint& g : trial->bad()) frozen.insert(g);
+      // Edge boxes with an inverted cone get their faces through a close
+      // box edge translated (warp.cpp, face translations; once per box) and
+      // the table is rebuilt without freezing anything; when no such box is
+      // new, the moved points of the inverted tetrahedra are frozen.
+      bool translated = false;
+      for (const std::int32_t ji : trial->bad_jobs()) {
+        const BoxJob& j = jobs[static_cast<std::size_t>(ji)];
+        if (j.kind != BoxKind::Edge || !shifted_jobs.insert(ji).second) continue;
+        edge_boxes.push_back({key_corner(tree.key(j.leaf), 0), key_corner(tree.key(j.leaf), 7), j.apex});
+        translated = true;
+      }
+      if (!translated)
+        for (const GridPoint& g : trial->bad()) frozen.insert(g);
       trial.reset();
       warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
-                                options.reflex_copies);
+                                options.reflex_copies, edge_boxes);
       release_free_heap();
     }
   }

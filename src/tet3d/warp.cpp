@@ -1,6 +1,7 @@
 #include "tet3d/warp.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -71,7 +72,8 @@ double facet_distance(const Domain3& domain, int facet, Vec3 x) {
 
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
-                            const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies) {
+                            const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies,
+                            std::span<const EdgeBoxBounds> edge_boxes) {
   WarpTable table;
   std::map<int, std::unique_ptr<FacetPlane>> planes;
   auto plane_of = [&](int f) -> const FacetPlane& {
@@ -102,6 +104,113 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     return out;
   };
   const auto& pv = domain.plc.vertices;
+  // Face translations (gap filled, bounded random seed 33, docs/ALGORITHM.md
+  // §12.5). §4.3's first pass moves a box edge l close to a P edge E by h/8
+  // along d (orthogonal to both, away from E) and bends the two box faces
+  // through l. When E clips the column along l of its edge box B (E ∩ B a
+  // few thousandths of h long), the apex on E ∩ I(B) then lies beyond the
+  // prewarped plane of the faces' unmoved parts and its cones onto them
+  // invert (the rebuild loop froze l: apex 0.002 h from both faces). Here
+  // each of those two faces of B is translated instead, by the component of
+  // the move along its outward normal n (only when positive: B grows):
+  // l gets exactly the move (h/8) d, every face of B stays planar (a face
+  // translated along its normal; the four faces beside it only stretch in
+  // their own planes), and the apex sees them all. h: the smallest box
+  // using a point of l (§4.3). The moves go through the same side and
+  // crossing rules and the same fallbacks as every first-pass move.
+  struct FaceShift {
+    int n = 0;                      // face normal axis
+    std::int64_t at = 0;            // the face's grid coordinate along n
+    std::array<std::int64_t, 4> uv{};  // B's extent along (n + 1) % 3 and (n + 2) % 3
+    int edge = -1;
+    Vec3 unit;                      // c n: the move per unit h/8 (c > 0 the component)
+    double h = INFINITY;            // the smallest box using a point of l
+    GridPoint l0, l1;               // l's ends
+  };
+  std::vector<FaceShift> shifts;
+  for (const EdgeBoxBounds& B : edge_boxes) {
+    const DomainEdge& de = domain.edges[static_cast<std::size_t>(B.edge)];
+    const Vec3 ea = pv[static_cast<std::size_t>(de.a)], eb = pv[static_cast<std::size_t>(de.b)];
+    const double hb = std::fabs(grid_coordinates(tree, B.hi).x - grid_coordinates(tree, B.lo).x);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int k = 0; k < 4; ++k) {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        const auto ui = static_cast<std::size_t>(u), vi = static_cast<std::size_t>(v);
+        GridPoint l0 = B.lo;
+        l0.f[ui] = ((k & 1) ? B.hi : B.lo).f[ui];
+        l0.f[vi] = ((k & 2) ? B.hi : B.lo).f[vi];
+        GridPoint l1 = l0;
+        l1.f[static_cast<std::size_t>(axis)] = B.hi.f[static_cast<std::size_t>(axis)];
+        const auto [ps, pe] = closest_points(grid_coordinates(tree, l0), grid_coordinates(tree, l1), ea, eb);
+        if (!(norm(ps - pe) < hb / 8)) continue;
+        Vec3 ax;
+        (axis == 0 ? ax.x : axis == 1 ? ax.y : ax.z) = 1;
+        Vec3 d = cross(eb - ea, ax);
+        const double len = norm(d);
+        if (!(len > 0)) continue;  // E parallel to l (exactly): the line move as before
+        d = (1 / len) * d;
+        if (dot(d, ps - pe) < 0) d = -1.0 * d;
+        for (const int n : {u, v}) {
+          const bool upper = (n == u ? (k & 1) : (k & 2)) != 0;
+          const double c = (n == 0 ? d.x : n == 1 ? d.y : d.z) * (upper ? 1.0 : -1.0);
+          if (!(c > 0)) continue;
+          FaceShift f;
+          f.n = n;
+          f.at = (upper ? B.hi : B.lo).f[static_cast<std::size_t>(n)];
+          const int a = (n + 1) % 3, b = (n + 2) % 3;
+          f.uv = {B.lo.f[static_cast<std::size_t>(a)], B.hi.f[static_cast<std::size_t>(a)],
+                  B.lo.f[static_cast<std::size_t>(b)], B.hi.f[static_cast<std::size_t>(b)]};
+          f.edge = B.edge;
+          (n == 0 ? f.unit.x : n == 1 ? f.unit.y : f.unit.z) = (upper ? 1.0 : -1.0) * c;
+          f.l0 = l0;
+          f.l1 = l1;
+          shifts.push_back(f);
+        }
+      }
+  }
+  auto on_face = [](const FaceShift& f, const GridPoint& p) {
+    const auto a = static_cast<std::size_t>((f.n + 1) % 3), b = static_cast<std::size_t>((f.n + 2) % 3);
+    return p.f[static_cast<std::size_t>(f.n)] == f.at && f.uv[0] <= p.f[a] && p.f[a] <= f.uv[1] &&
+           f.uv[2] <= p.f[b] && p.f[b] <= f.uv[3];
+  };
+  auto on_line = [](const FaceShift& f, const GridPoint& p) {
+    int same = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+      same += (f.l0.f[i] == f.l1.f[i] && p.f[i] == f.l0.f[i]) ? 1 : 0;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (f.l0.f[i] != f.l1.f[i] && (p.f[i] < f.l0.f[i] || p.f[i] > f.l1.f[i])) return false;
+    return same == 2;
+  };
+  if (!shifts.empty())
+    for (const WarpCandidate& c : candidates) {
+      if (c.facets.empty() || !c.square_corners.empty()) continue;
+      const std::int32_t level = std::max(c.level, corners.finest_level(c.p));
+      if (level < 0) continue;
+      const double hc = std::ldexp(tree.side(0), -level);
+      for (FaceShift& f : shifts)
+        if (on_line(f, c.p)) f.h = std::min(f.h, hc);
+    }
+  // The translation of p: per (face plane, E) the largest of the shifts
+  // whose face holds p; and the P edges it answers for (their line moves
+  // are not added again).
+  auto face_move = [&](const GridPoint& p, std::vector<int>& shifted_edges) {
+    Vec3 total;
+    std::vector<std::pair<std::array<std::int64_t, 3>, Vec3>> best;  // (n, at, edge) -> move
+    for (const FaceShift& f : shifts) {
+      if (!(f.h < INFINITY) || !on_face(f, p)) continue;
+      const Vec3 m = (f.h / 8) * f.unit;
+      const std::array<std::int64_t, 3> key{f.n, f.at, f.edge};
+      auto it = std::find_if(best.begin(), best.end(), [&](const auto& e) { return e.first == key; });
+      if (it == best.end())
+        best.push_back({key, m});
+      else if (norm(m) > norm(it->second))
+        it->second = m;
+      if (std::find(shifted_edges.begin(), shifted_edges.end(), f.edge) == shifted_edges.end())
+        shifted_edges.push_back(f.edge);
+    }
+    for (const auto& e : best) total = total + e.second;
+    return total;
+  };
   for (const WarpCandidate& c : candidates) {
     if (c.facets.empty() || !c.square_corners.empty()) continue;
     const Vec3 x0 = grid_coordinates(tree, c.p);
@@ -122,8 +231,11 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // add up (a box corner near E on two or three box edges). The direction
     // is taken from the segment's pair of closest points, computed from the
     // sorted end points, so both ends of a segment move alike.
-    Vec3 x = x0;
+    std::vector<int> shifted_edges;
+    Vec3 x = x0 + face_move(c.p, shifted_edges);
     std::vector<std::pair<int, int>> seen;  // (axis, edge)
+    for (const int e : shifted_edges)
+      for (int axis = 0; axis < 3; ++axis) seen.push_back({axis, e});
     // Whole box edges first (§4.3 looks at box edges), then ring segments
     // (pieces of box edges, or edges of smaller neighbouring squares): a
     // ring point far from E on a box edge that passes near E moves with

@@ -97,12 +97,19 @@ struct WarpCandidate {
   // pieces between ring points: docs/ALGORITHM.md §12.5).
   std::vector<std::pair<GridPoint, GridPoint>> box_edges;
 };
+// An edge box (§4.5.3): its grid bounds and its P edge.
+struct EdgeBoxBounds {
+  GridPoint lo, hi;
+  int edge = -1;
+};
 // `frozen` (may be null): points never moved (counted in frozen_left when they would be).
 // `reflex_copies` false: no Fig. 4.7 copies, a slot vertex stays (reflex_left).
+// `edge_boxes`: the edge boxes whose faces through a close box edge are
+// translated (warp.cpp, "face translations"); empty: none.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
-                            bool reflex_copies = true);
+                            bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {});
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {
