@@ -366,6 +366,42 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   return -sign_of_mpq(exact);
 }
 
+namespace {
+
+// orient3d's expansion stage when a difference b - a, c - a or d - a is not
+// exact (full-precision points near a slanted facet plane: FacetPlane::settle
+// and within_ulp_of_plane): multilinearity in the rows gives
+// det(b - a, c - a, d - a) = det(b, c, d) - det(a, c, d) - det(b, a, d) - det(b, c, a)
+// (the terms with two rows a vanish), 24 triple products of raw coordinates,
+// each with one x, one y and one z, so each axis of the four points is scaled
+// by one power of two (sign unchanged) and the range rule of
+// add_triple_product applies (nonzero scaled values in [2^-250, 1)). False
+// outside that range (GMP decides).
+bool orient3d_raw_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign) {
+  double x[4] = {a.x, b.x, c.x, d.x}, y[4] = {a.y, b.y, c.y, d.y}, z[4] = {a.z, b.z, c.z, d.z};
+  if (!scale_group(x, 250) || !scale_group(y, 250) || !scale_group(z, 250)) return false;
+  Expansion<96> sum;
+  // + det(rows p, q, r) (or - with negate), rows named by index 0..3 = a..d:
+  // det = px (qy rz - qz ry) - py (qx rz - qz rx) + pz (qx ry - qy rx).
+  const auto add_det = [&](int p, int q, int r, bool negate) {
+    const double m = negate ? -1.0 : 1.0;  // negating a factor is exact
+    add_triple_product(sum, m * x[p], y[q], z[r]);
+    add_triple_product(sum, -m * x[p], z[q], y[r]);
+    add_triple_product(sum, -m * y[p], x[q], z[r]);
+    add_triple_product(sum, m * y[p], z[q], x[r]);
+    add_triple_product(sum, m * z[p], x[q], y[r]);
+    add_triple_product(sum, -m * z[p], y[q], x[r]);
+  };
+  add_det(1, 2, 3, false);  // det(b, c, d)
+  add_det(0, 2, 3, true);   // - det(a, c, d)
+  add_det(1, 0, 3, true);   // - det(b, a, d)
+  add_det(1, 2, 0, true);   // - det(b, c, a)
+  sign = sum.sign();
+  return true;
+}
+
+}  // namespace
+
 bool detail::orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign) {
   // Columns of det(u, v, w), u = b - a, v = c - a, w = d - a; every term of
   // the determinant takes one entry from each column, so scaling a column
@@ -374,7 +410,7 @@ bool detail::orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign) {
   if (!exact_difference(b.x, a.x, x[0]) || !exact_difference(c.x, a.x, x[1]) || !exact_difference(d.x, a.x, x[2]) ||
       !exact_difference(b.y, a.y, y[0]) || !exact_difference(c.y, a.y, y[1]) || !exact_difference(d.y, a.y, y[2]) ||
       !exact_difference(b.z, a.z, z[0]) || !exact_difference(c.z, a.z, z[1]) || !exact_difference(d.z, a.z, z[2]))
-    return false;
+    return orient3d_raw_expansion(a, b, c, d, sign);
   if (!scale_group(x, 250) || !scale_group(y, 250) || !scale_group(z, 250)) return false;
   // det = ux (vy wz - vz wy) - uy (vx wz - vz wx) + uz (vx wy - vy wx).
   Expansion<24> sum;

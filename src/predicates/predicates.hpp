@@ -100,9 +100,12 @@ bool dot_sign_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign);
 // differences b - a, c - a, d - a are exact, the six triple products of
 // det(b - a, c - a, d - a), each split into four doubles without rounding
 // (two nested two-products), summed as an expansion; each axis (column) is
-// scaled by a power of two first. Returns false when a difference is not
-// exact (then GMP decides) or a column's nonzero magnitudes span more than
-// about 2^250 (triple products must stay far from underflow).
+// scaled by a power of two first. When a difference is not exact (points
+// near a slanted facet plane), the same with the 24 triple products of raw
+// coordinates of det(b, c, d) - det(a, c, d) - det(b, a, d) - det(b, c, a).
+// Returns false (then GMP decides) when a column's (axis's) nonzero
+// magnitudes span more than about 2^250 (triple products must stay far from
+// underflow) or a value is not finite.
 bool orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign);
 }  // namespace detail
 

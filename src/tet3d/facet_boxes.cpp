@@ -21,6 +21,7 @@
 #include "tet3d/cut_square.hpp"
 #include "tet3d/edge_point.hpp"
 #include "tet3d/facet_plane.hpp"
+#include "tet3d/first_use_index.hpp"
 #include "tet3d/tet_shape.hpp"
 #include "tet3d/point_book.hpp"
 #include "tet3d/warp.hpp"
@@ -594,9 +595,12 @@ std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet&
   PointBook scratch;
   const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
   std::vector<WarpCandidate> candidates;
-  std::unordered_map<GridPoint, std::size_t, GridPointHash> index, centre_index;
+  // Point -> its candidate (centre) number: FirstUseIndex ids count first
+  // insertions, so they are the positions in candidates (centres).
+  FirstUseIndex<GridPoint, GridPointHash> index, centre_index;
   std::vector<WarpCandidate> centres;
   std::vector<FaceSquare> squares;
+  std::vector<GridPoint> ring;  // one square's ring, reused
   for (const BoxJob& j : jobs) {
     squares.clear();
     job_squares(tree, corners, j, squares);
@@ -611,7 +615,7 @@ std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet&
       // The square's centre, carried with its four corners (warp.hpp).
       // A final square's centre is no leaf corner (box_faces.hpp), so never
       // a ring point.
-      const auto [cit, cfresh] = centre_index.try_emplace(s.centre(), centres.size());
+      const auto [cid, cfresh] = centre_index.insert(s.centre());
       if (cfresh) {
         GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
         c1.f[static_cast<std::size_t>(s.u)] += s.side;
@@ -621,15 +625,15 @@ std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet&
         centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1, {}});
       }
       for (const int f : faces.facets) {
-        std::vector<int>& cf = centres[cit->second].facets;
+        std::vector<int>& cf = centres[static_cast<std::size_t>(cid)].facets;
         if (std::find(cf.begin(), cf.end(), f) == cf.end()) cf.push_back(f);
       }
-      const std::vector<GridPoint> ring = square_ring(s, corners);
+      square_ring(s, corners, ring);
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const GridPoint& p = ring[i];
-        const auto [it, fresh] = index.try_emplace(p, candidates.size());
+        const auto [id, fresh] = index.insert(p);
         if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
-        WarpCandidate& c = candidates[it->second];
+        WarpCandidate& c = candidates[static_cast<std::size_t>(id)];
         c.level = std::max(c.level, level);
         for (const int f : faces.facets)
           if (std::find(c.facets.begin(), c.facets.end(), f) == c.facets.end()) c.facets.push_back(f);
@@ -653,7 +657,7 @@ std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet&
     }
   }
   for (WarpCandidate& c : centres) {
-    if (index.count(c.p) != 0) throw InternalError("tet3d: a square centre is a ring point");
+    if (index.find(c.p) >= 0) throw InternalError("tet3d: a square centre is a ring point");
     candidates.push_back(std::move(c));
   }
   return candidates;

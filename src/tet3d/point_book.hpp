@@ -30,6 +30,7 @@ class PointBook {
   }
   // The table grid keys resolve through (may be null: none).
   void set_warps(const WarpTable* warps) { warps_ = warps; }
+  const WarpTable* warps() const { return warps_; }
   int find(const VertexKey& key) const { return index_.find(key); }
   const Vec3& point(int id) const { return points_[static_cast<std::size_t>(id)]; }
   const VertexKey& key(int id) const { return index_.key(id); }

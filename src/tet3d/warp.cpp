@@ -564,7 +564,9 @@ WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, con
 }
 
 int grid_vertex(const GridPoint& p, const OctTree& tree, const WarpTable* warps, PointBook& book) {
-  if (warps != nullptr)
+  // A book resolving through the same table does this lookup itself (id()):
+  // one probe per grid point instead of two.
+  if (warps != nullptr && warps != book.warps())
     if (const Warp* w = warps->find(p)) return book.id({VertexKind::Warped, p, {}, w->facet}, [&] { return w->at; });
   return book.id(grid_key(p), [&] { return grid_coordinates(tree, p); });
 }

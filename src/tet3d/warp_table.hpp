@@ -14,11 +14,14 @@
 // P ∧ b and ignored for P ∧ c. Every decision (sides, orders) is still made
 // on the prewarped point, which each copy leaves unchanged for its facet
 // (warp.cpp).
+#include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "pqmesh/vec.hpp"
+#include "tet3d/first_use_index.hpp"
 #include "tet3d/grid_point.hpp"
 
 namespace pqmesh::tet3d {
@@ -30,11 +33,19 @@ struct Warp {
 
 class WarpTable {
  public:
+  // Every grid point of every box is looked up here (grid_vertex) and few are
+  // warped, so most finds miss: the flat index ends a miss in its slot array.
+  // The pointer stays valid until the next insert.
   const Warp* find(const GridPoint& p) const {
-    const auto it = map_.find(p);
-    return it == map_.end() ? nullptr : &it->second;
+    const int id = index_.find(p);
+    return id < 0 ? nullptr : &warps_[static_cast<std::size_t>(id)];
   }
-  bool insert(const GridPoint& p, const Warp& w) { return map_.try_emplace(p, w).second; }
+  // False (and no change) when p already has a warp.
+  bool insert(const GridPoint& p, const Warp& w) {
+    const bool fresh = index_.insert(p).second;
+    if (fresh) warps_.push_back(w);
+    return fresh;
+  }
   // Fig. 4.7: the copy of p warped for facet f (p has no entry then).
   bool insert_copy(const GridPoint& p, int facet, Vec3 at) { return copies_.try_emplace({p, facet}, at).second; }
   const Vec3* find_copy(const GridPoint& p, int facet) const {
@@ -52,13 +63,13 @@ class WarpTable {
   // Whether p was moved at all (an entry or a copy): the points a freeze
   // round (facet_boxes.cpp) may blame.
   bool moved(const GridPoint& p) const {
-    if (map_.count(p) != 0) return true;
+    if (index_.find(p) >= 0) return true;
     if (copies_.empty()) return false;
     for (const auto& [key, at] : copies_)
       if (key.first == p) return true;
     return false;
   }
-  std::size_t size() const { return map_.size(); }
+  std::size_t size() const { return warps_.size(); }
   std::size_t copy_count() const { return copies_.size(); }
   std::int64_t conflicts = 0;     // left: the move would change a side decision
   std::int64_t bisected = 0;      // moved onto the bisector of an acute wedge (among size())
@@ -80,7 +91,8 @@ class WarpTable {
       return GridPointHash{}(k.first) * 31u + static_cast<std::size_t>(k.second + 1);
     }
   };
-  std::unordered_map<GridPoint, Warp, GridPointHash> map_;
+  FirstUseIndex<GridPoint, GridPointHash> index_;
+  std::vector<Warp> warps_;  // by index_ id
   std::unordered_map<std::pair<GridPoint, int>, Vec3, CopyHash> copies_;  // Fig. 4.7, (p, facet) -> coordinates
 };
 
