@@ -325,7 +325,7 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
     int spikes = 0;
     std::vector<char> locked(angles.size(), 0);  // spike vertices keep their fine position
     if (rng.chance(o.spike_probability)) {
-      const int want = rng.integer(1, 2);
+      const int want = rng.integer(1, std::max(1, o.max_spikes));
       for (int s = 0; s < want; ++s)
         spikes += insert_spike(rng, angles, radii, locked, 1.0, o.min_spike_degrees, o.max_spike_degrees, false);
     }
@@ -534,6 +534,8 @@ RandomPolyhedron random_polyhedron_detail(std::uint64_t seed, const PolyhedronOp
       if (near && rng.chance(0.5)) z0 = zgap;
       else if (near) z1 = h - zgap;
       if (!(0 < z0 && z0 < z1 && z1 < h)) continue;
+      // Floor and roof at least min_cavity_wall * h thick (always true for 0).
+      if (z0 < o.min_cavity_wall * h || z1 > (1 - o.min_cavity_wall) * h) continue;
       cav.z0 = z0;
       cav.z1 = z1;
       const Vec2 fc = snap(Vec2{rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7)}, bits);
@@ -683,6 +685,36 @@ PolyhedronOptions bounded_feature_polyhedron_options() {
   o.max_cavity_half_width = 0.2;
   o.min_cavity_height = 0.25;
   o.max_cavity_height = 0.4;
+  return o;
+}
+
+PolyhedronOptions suite_polyhedron_options() {
+  PolyhedronOptions o;
+  o.polygon.min_vertices = 4;
+  o.polygon.max_vertices = 6;
+  o.polygon.max_holes = 1;
+  o.polygon.min_hole_vertices = 3;
+  o.polygon.max_hole_vertices = 5;
+  o.polygon.min_hole_radius = 0.12;
+  o.polygon.max_hole_radius = 0.2;
+  o.polygon.spike_probability = 0.25;
+  o.polygon.max_spikes = 1;
+  o.polygon.min_spike_degrees = 20;
+  o.polygon.max_spike_degrees = 30;
+  o.polygon.min_gap = 3.0 / 16;
+  o.polygon.min_clearance = 3.0 / 16;
+  o.frustum_probability = 0.5;
+  o.thin_probability = 0;
+  o.min_height = 1.0;
+  o.max_height = 1.25;
+  o.min_top_scale = 0.75;
+  o.max_top_scale = 1.25;
+  o.cavity_probability = 0.6;
+  o.min_cavity_half_width = 0.08;
+  o.max_cavity_half_width = 0.15;
+  o.min_cavity_height = 0.2;
+  o.max_cavity_height = 0.35;
+  o.min_cavity_wall = 0.25;
   return o;
 }
 

@@ -31,7 +31,8 @@ struct PolygonOptions {
   int max_holes = 4;             // 0..max_holes holes
   int min_hole_vertices = 3;
   int max_hole_vertices = 9;
-  double spike_probability = 0.35;   // 1-2 sharp spikes in the outer loop; half as often a notch in a hole
+  double spike_probability = 0.35;   // 1-max_spikes sharp spikes in the outer loop; half as often a notch in a hole
+  int max_spikes = 2;
   // Spike/notch corner angles are drawn in [min, max], biased towards min
   // (min + (max - min) u^3), and hit the drawn value within a few percent.
   // The smallest corner of the polygon is never below ~min: coarse snapping
@@ -101,6 +102,9 @@ struct PolyhedronOptions {
   double max_cavity_half_width = 0.15;
   double min_cavity_height = 0.1;
   double max_cavity_height = 0.35;
+  // A cavity whose floor or roof would be thinner than this fraction of the
+  // solid's height is redrawn (0: any z0 > 0, z1 < height).
+  double min_cavity_wall = 0;
 };
 
 // Options of the "bounded feature" family: every feature (edge, gap, hole,
@@ -110,6 +114,24 @@ struct PolyhedronOptions {
 // with through-holes and cavities. Cheap to mesh (see
 // tests/unit/mesh3d/random_polyhedra_test.cpp for the measured cost).
 PolyhedronOptions bounded_feature_polyhedron_options();
+
+// Options of the "suite" family, the one the default test suite meshes for
+// 200 seeds on every run (tests/unit/mesh3d/random_polyhedra_test.cpp), so
+// each seed must cost about a cube's worth of tetrahedra, not millions.
+// tet_mesh's cost grows with the volume over which the local feature size is
+// small, so what is bounded is every narrow region, relative to the outer
+// radius (~1) of the base polygon:
+//  - gaps: holes and cavity footprints at least 3/16 from every other loop
+//    (a near-touching move stops no closer than 3/16), cavity floors and roofs at
+//    least 1/4 of the height, heights in [1, 1.25] (no thin slabs);
+//  - spikes: at most one per outer loop (probability 1/4), 20-30 degrees
+//    (a sliver wedge costs roughly 1/angle^2);
+//  - frustum walls: top scales 3/4, 7/8 or 5/4 only;
+//  - holes (at most 1, radius 0.12-0.2) and cavities (1-2, box or prism,
+//    half-width 0.08-0.15) are small, so their own surface is cheap.
+// Still nonconvex (4-6 outer vertices, notches, spikes), with through-holes,
+// box and prism cavities, frustums, random scale 2^-3..2^3 and offset.
+PolyhedronOptions suite_polyhedron_options();
 
 // A cavity: the prism footprint x [z0, z1]; footprint counter-clockwise.
 struct Cavity {

@@ -15,24 +15,42 @@
 // may only shrink: a seed failing outside it, or failing with another class,
 // fails the test).
 //
-// Two families (tests/support/random_domains.hpp):
+// Three families (tests/support/random_domains.hpp):
+//  - "suite": suite_polyhedron_options(), gaps >= 3/16 of the outer radius,
+//    cavity floors and roofs >= 1/4 of the height, at most one 20-30 degree
+//    spike, small holes and cavities, mild frustums (the rationale is at its
+//    declaration); seeds 0..199, ALL of them, in kSuiteFamilyShards TEST_P
+//    instances of kSuiteFamilySeedsPerShard, meant for the DEFAULT suite
+//    (gtest_discover_tests makes each shard its own ctest) but DISABLED for
+//    cost today (below).
 //  - "bounded": bounded_feature_polyhedron_options(), every feature at least
 //    ~1/16 of the bounding box, spikes 12-30 deg, through-holes and cavities;
-//    seeds 0..199 in kBoundedShards TEST_P instances of kBoundedSeedsPerShard
-//    (gtest_discover_tests makes each its own ctest).
+//    seeds 0..199 in kBoundedShards DISABLED instances of
+//    kBoundedSeedsPerShard.
 //  - "harsh": harsh_options() below, 1e-2 gaps and 5-degree spikes; seeds
-//    0..199 in kHarshShards instances of kHarshSeedsPerShard.
-// Test time. Measured 2026-12-01 (Release, shared 2-core machine, cpu s per
-// seed including check_mesh, which costs about as much as tet_mesh on these
-// slanted facets): bounded seeds 0-29 and 100-121: 0.8-19 s, median 7.0 s
-// (125k-2.2M tetrahedra; 6 of the 52 seeds above 20 s; a cube is 0.33 s and
-// 51k), so ~25-30 cpu minutes for the 200; harsh seeds 15-84 s. So both families are
-// DISABLED (run them with --gtest_also_run_disabled_tests, e.g.
-// --gtest_filter='*Bounded*'), and the default suite runs kSuiteSeeds, a
-// FIXED hand-picked list of cheap bounded seeds (picked for cost only, from
-// the measurement above; the other seeds are not known to fail). Per-seed
-// lines and a summary per shard are printed; when several shards run in one
-// process an overall summary is printed at the end.
+//    0..199 in kHarshShards DISABLED instances of kHarshSeedsPerShard.
+// Test time. Measured 2026-12-01 (Release, shared 2-core machine under load,
+// cpu s per seed including check_mesh and quality_report):
+//  - suite seeds 0..199 (two processes of 100 seeds): ALL 200 valid, none
+//    threw, no unwarped fallback, aspect * alpha median 196, 90th percentile
+//    559, max 21,215 (seed 92, alpha 22.1 deg, aspect 54,914; below
+//    kAspectAlphaC = 25,000 by 15%); 652 cpu s in all: min 0.16 s, median
+//    1.45 s, 90th percentile 7.5 s, max 45.1 s (seed 92); 26k-3.9M
+//    tetrahedra, median 311k. The cost is a heavy tail: 82 seeds above 2 s
+//    take 545 of the 652 s, and the 10 slowest all have a through-hole.
+//    That is 6.5x the ~100 s budget for the default suite (and ~1-2 cpu
+//    hours under ASan), so the shards are DISABLED_ until the family is made
+//    cheaper (docs/ALGORITHM.md §13, "Random polyhedra").
+//  - bounded seeds 0-10 (re-measured after the cheaper check_mesh on slanted
+//    facets): 0.9-34 s, median 5.5 s, 177k-4.4M tetrahedra (earlier, seeds
+//    0-29 and 100-121: median 7.0 s, 125k-2.2M; a cube is 0.33 s and 51k),
+//    so ~20-30 cpu minutes for the 200; harsh seeds 15-84 s. Both are
+//    DISABLED (run them with --gtest_also_run_disabled_tests, e.g.
+//    --gtest_filter='*Bounded*'); the default suite also keeps kSuiteSeeds,
+//    a FIXED hand-picked list of cheap bounded seeds (picked for cost only;
+//    the other seeds are not known to fail).
+// Per-seed lines and a summary per shard are printed; when several shards
+// run in one process an overall summary is printed at the end.
 #include <gtest/gtest.h>
 
 #include "aspect_alpha_property.hpp"
@@ -81,6 +99,11 @@ PolyhedronOptions harsh_options() {
 
 constexpr int kBoundedShards = 40;
 constexpr int kBoundedSeedsPerShard = 5;  // 200 seeds: 0..199
+// The "suite" family: 40 ctests of 5 seeds (when enabled), so
+// ctest -j2 balances them and a shard stays far below the 600 s ctest timeout
+// under ASan (see the header for the measured cost).
+constexpr int kSuiteFamilyShards = 40;
+constexpr int kSuiteFamilySeedsPerShard = 5;  // 200 seeds: 0..199
 constexpr int kHarshShards = 20;
 constexpr int kHarshSeedsPerShard = 10;   // 200 seeds: 0..199
 // The default-suite seeds of the bounded family, picked for cost (measured
@@ -328,6 +351,16 @@ TEST_P(RandomPolyhedraHarsh, MeshValidWithAspectBelowCOverAlpha) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedraHarsh, ::testing::Range(0, kHarshShards));
+
+class RandomPolyhedraSuiteFamily : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomPolyhedraSuiteFamily, MeshValidWithAspectBelowCOverAlpha) {
+  const int shard = GetParam();
+  run_seeds(seed_range(static_cast<std::uint64_t>(shard) * kSuiteFamilySeedsPerShard, kSuiteFamilySeedsPerShard),
+            "suite", suite_polyhedron_options(), shard_title("suite", shard, kSuiteFamilySeedsPerShard));
+}
+
+INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedraSuiteFamily, ::testing::Range(0, kSuiteFamilyShards));
 
 TEST(RandomPolyhedraSuite, BoundedSeedsMeshValidWithAspectBelowCOverAlpha) {
   run_seeds(std::vector<std::uint64_t>(kSuiteSeeds.begin(), kSuiteSeeds.end()), "bounded",
