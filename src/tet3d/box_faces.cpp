@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "pqmesh/errors.hpp"
+#include "tet3d/box_jobs.hpp"
+#include "tet3d/facet_boxes.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -16,21 +18,51 @@ std::vector<std::int32_t> all_leaves(const mv3d::OctreeBuilder& builder) { retur
 
 }  // namespace
 
-CornerSet::CornerSet(const mv3d::OctreeBuilder& builder) : CornerSet(builder.tree(), all_leaves(builder)) {}
+// Also the 27 lattice points of every united vertex box B (§4.1.3): B is
+// 2x2x2 cells of its leaf's size, but a cell may lie inside a larger leaf of
+// another component (or of none) — the far side of a narrow slot at its mouth
+// (box_jobs.hpp) — so some of B's cell corners are no leaf corner. Without
+// them a square of that larger leaf whose centre is B's corner stays whole,
+// and the centre is then also a ring point of B's squares (warping threw
+// "a square centre is a ring point" on a slot of half-width 0.027,
+// slot_square_centre_test.cpp). With them every
+// corner of a job's face square (leaf face or B face) is in the set, and so
+// is every split point; a final square's centre is not (box_faces.hpp
+// subdivision), hence never a ring point. The set stays global, so both
+// sides of every square still split it alike.
+CornerSet::CornerSet(const mv3d::OctreeBuilder& builder) : CornerSet(builder.tree(), all_leaves(builder)) {
+  const OctTree& tree = builder.tree();
+  for (const std::int32_t n : builder.leaves_by_id()) {
+    const mv3d::NodeData3& d = builder.data(n);
+    const int v = d.vertex_owner;
+    if (!d.has_component || v < 0 || !std::binary_search(d.vertices.begin(), d.vertices.end(), v)) continue;
+    const BoxKey<3>& key = tree.key(n);
+    const GridPoint lo = united_lo(key, united_block(builder, n, v));
+    for (int k = 0; k < 27; ++k) {
+      GridPoint p = lo;
+      p.f[0] += (k % 3) * key.fine_side();
+      p.f[1] += (k / 3 % 3) * key.fine_side();
+      p.f[2] += (k / 9) * key.fine_side();
+      add(p, key.level);
+    }
+  }
+}
 
 CornerSet::CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves) {
   for (const std::int32_t n : leaves) {
     const BoxKey<3>& key = tree.key(n);
     if (!key.aligned()) throw InternalError("tet3d: merged (unaligned) leaf " + std::to_string(n));
-    for (int k = 0; k < 8; ++k) {
-      const auto [id, fresh] = index_.insert(key_corner(key, k));
-      if (fresh) {
-        levels_.push_back(key.level);
-      } else {
-        std::int32_t& level = levels_[static_cast<std::size_t>(id)];
-        level = std::max(level, key.level);
-      }
-    }
+    for (int k = 0; k < 8; ++k) add(key_corner(key, k), key.level);
+  }
+}
+
+void CornerSet::add(const GridPoint& p, std::int32_t level) {
+  const auto [id, fresh] = index_.insert(p);
+  if (fresh) {
+    levels_.push_back(level);
+  } else {
+    std::int32_t& deepest = levels_[static_cast<std::size_t>(id)];
+    deepest = std::max(deepest, level);
   }
 }
 

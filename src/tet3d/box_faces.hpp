@@ -37,6 +37,8 @@ namespace pqmesh::tet3d {
 // P; see box_faces.cpp), the points that split box faces and edges.
 class CornerSet {
  public:
+  // With the builder: also the cell corners of every united vertex box
+  // (box_faces.cpp).
   explicit CornerSet(const mv3d::OctreeBuilder& builder);
   // The corners of the given leaves of `tree` (all must be aligned).
   CornerSet(const OctTree& tree, std::span<const std::int32_t> leaves);
@@ -50,6 +52,7 @@ class CornerSet {
   }
 
  private:
+  void add(const GridPoint& p, std::int32_t level);
   // Open addressing (first_use_index.hpp, issue 5 item 9): lookups only, the
   // set is never iterated, so its layout cannot reach the output.
   FirstUseIndex<GridPoint, GridPointHash> index_;

@@ -4,6 +4,16 @@
 
 namespace pqmesh::tet3d {
 
+std::uint8_t united_block(const mv3d::OctreeBuilder& builder, std::int32_t n, int v) {
+  const mv3d::Cube& b = builder.vertex_box(v);
+  const mv3d::Cube s = builder.cube(n);
+  const double blo[3] = {b.lo.x, b.lo.y, b.lo.z}, slo[3] = {s.lo.x, s.lo.y, s.lo.z};
+  std::uint8_t block = 0;
+  for (int a = 0; a < 3; ++a)
+    if (blo[a] < slo[a]) block = static_cast<std::uint8_t>(block | (1u << a));
+  return block;
+}
+
 BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   const OctTree& tree = builder.tree();
   const Domain3& domain = builder.domain();
@@ -29,13 +39,7 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
       if (!std::binary_search(d.vertices.begin(), d.vertices.end(), v)) continue;
       if (vertex_done[static_cast<std::size_t>(v)]++) continue;
       // The united box: 2x2x2 leaves of n's size; which side per axis.
-      const mv3d::Cube& b = builder.vertex_box(v);
-      const mv3d::Cube s = builder.cube(n);
-      BoxJob job{n, -1, BoxKind::Vertex, v, 0};
-      const double blo[3] = {b.lo.x, b.lo.y, b.lo.z}, slo[3] = {s.lo.x, s.lo.y, s.lo.z};
-      for (int a = 0; a < 3; ++a)
-        if (blo[a] < slo[a]) job.block = static_cast<std::uint8_t>(job.block | (1u << a));
-      out.jobs.push_back(job);
+      out.jobs.push_back({n, -1, BoxKind::Vertex, v, united_block(builder, n, v)});
       // Leaves of another component inside B (the far wall of a narrow slot
       // at its mouth) are not pieces of it: they get their own jobs by kind
       // (below); the vertex box's squares see only v's sectors of its facets

@@ -38,4 +38,9 @@ struct BoxJobs {
 
 BoxJobs box_jobs(const mv3d::OctreeBuilder& builder);
 
+// Where v's united box (builder.vertex_box(v), 2x2x2 cells of leaf n's size)
+// extends from its cell n: bit a set when it extends one side below n along
+// axis a (BoxJob::block).
+std::uint8_t united_block(const mv3d::OctreeBuilder& builder, std::int32_t n, int v);
+
 }  // namespace pqmesh::tet3d

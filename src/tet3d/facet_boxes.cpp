@@ -613,8 +613,9 @@ std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet&
     for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
     for (const FaceSquare& s : squares) {
       // The square's centre, carried with its four corners (warp.hpp).
-      // A final square's centre is no leaf corner (box_faces.hpp), so never
-      // a ring point.
+      // A final square's centre is in no CornerSet point (leaf corners and
+      // the cell corners of united boxes, box_faces.cpp), so never a ring
+      // point.
       const auto [cid, cfresh] = centre_index.insert(s.centre());
       if (cfresh) {
         GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
