@@ -10,16 +10,12 @@
 
 #include "pqmesh/mesh_io.hpp"
 #include "sample_meshes.hpp"
+#include "support/paths.hpp"
 
 namespace pqmesh {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const std::filesystem::path& p) { return test::file_bytes(p.string()); }
 
 void spit(const std::filesystem::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 

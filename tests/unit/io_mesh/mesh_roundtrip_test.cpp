@@ -10,6 +10,7 @@
 #include "predicates/predicates.hpp"
 #include "pqmesh/mesh_io.hpp"
 #include "sample_meshes.hpp"
+#include "support/paths.hpp"
 
 namespace pqmesh {
 namespace {
@@ -30,12 +31,7 @@ const FormatCase kCases[] = {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const std::filesystem::path& p) { return test::file_bytes(p.string()); }
 
 class RoundTrip : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 

@@ -93,10 +93,7 @@ TEST_P(AlignedCorpus, MeshesCompletelyWithFacetMarkers) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, AlignedCorpus, ::testing::Values("cube.poly", "l_block.poly"));
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+std::string slurp(const std::string& path) { return test::file_bytes(path); }
 
 // CGAL's determinism test: mesh twice, write, compare bytes (issue 5 item 3).
 TEST(TetMeshDeterminism, ByteIdenticalFiles) {
