@@ -32,6 +32,11 @@ constexpr Vec3 cross(Vec3 a, Vec3 b) {
 }
 inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 
+// Coordinate number `axis` (0 = x, 1 = y, 2 = z) of p, for code that loops
+// over the axes; axis_ref gives it as an lvalue.
+constexpr double axis_coord(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
+constexpr double& axis_ref(Vec3& p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
+
 // Angle in radians between two nonzero vectors, robust near 0 and pi
 // (atan2 of |a x b| and a.b instead of acos).
 inline double angle_between(Vec2 a, Vec2 b) { return std::atan2(std::abs(cross(a, b)), dot(a, b)); }

@@ -39,7 +39,7 @@ struct MeshTraits<TetMesh3> {
 };
 
 inline double coord(const Vec2& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : 0.0); }
-inline double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+inline double coord(const Vec3& p, int k) { return axis_coord(p, k); }
 
 // Marker of item i, 0 when the marker array is empty.
 inline int marker_or_zero(const std::vector<int>& markers, std::size_t i) {

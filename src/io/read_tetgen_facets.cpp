@@ -10,20 +10,19 @@ namespace {
 
 enum class Where { Inside, Boundary, Outside };
 
-double coord(const Vec3& p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 
 // Exact winding-number test of q against the polygon projected by dropping
 // `drop` (axes u, v in orient2d_projected's cyclic order).
 Where locate(const std::vector<Vec3>& V, const std::vector<int>& poly, const Vec3& q, int drop) {
   const int ua = (drop + 1) % 3, va = (drop + 2) % 3;
-  const double qu = coord(q, ua), qv = coord(q, va);
+  const double qu = axis_coord(q, ua), qv = axis_coord(q, va);
   int winding = 0;
   const std::size_t k = poly.size();
   for (std::size_t i = 0; i < k; ++i) {
     const Vec3& a = V[poly[i]];
     const Vec3& b = V[poly[(i + 1) % k]];
     const Sign o = orient2d_projected(a, b, q, drop);
-    const double au = coord(a, ua), av = coord(a, va), bu = coord(b, ua), bv = coord(b, va);
+    const double au = axis_coord(a, ua), av = axis_coord(a, va), bu = axis_coord(b, ua), bv = axis_coord(b, va);
     if (o == Sign::Zero && std::min(au, bu) <= qu && qu <= std::max(au, bu) && std::min(av, bv) <= qv &&
         qv <= std::max(av, bv))
       return Where::Boundary;

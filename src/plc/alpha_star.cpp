@@ -48,7 +48,6 @@ std::pair<double, double> project(Vec3 p, int drop) {
   }
 }
 
-double component(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 
 [[noreturn]] void fail(const Plc3& plc, ErrorCode code, const std::string& what, std::vector<std::int64_t> ids,
                        int facet) {
@@ -97,7 +96,7 @@ void AlphaGeometry::build_frames() {
       if (project(V[outer[i]], fr.drop) < project(V[outer[low]], fr.drop)) low = i;
     const int a = outer[(low + n - 1) % n], v = outer[low], b = outer[(low + 1) % n];
     const Sign turn = orient2d_projected(V[a], V[v], V[b], fr.drop);
-    const double nd = component(normal, fr.drop);
+    const double nd = axis_coord(normal, fr.drop);
     if (turn == Sign::Zero || nd == 0 || si(turn) != (nd > 0 ? 1 : -1))
       fail(plc_, ErrorCode::DegenerateFacet,
            "facet " + std::to_string(fid + first) + " has no consistent orientation (degenerate or self-crossing loop)",
@@ -292,7 +291,7 @@ bool AlphaGeometry::sees(int v, int x, Vec3 w, int w_vertex, int skip_facet) con
   // Plane of the sector: the projection that keeps (o, u, w) non-degenerate.
   const Vec3 m = cross(u - o, w - o);
   int axes[3] = {0, 1, 2};
-  std::sort(axes, axes + 3, [&](int p, int q) { return std::abs(component(m, p)) > std::abs(component(m, q)); });
+  std::sort(axes, axes + 3, [&](int p, int q) { return std::abs(axis_coord(m, p)) > std::abs(axis_coord(m, q)); });
   int drop = -1;
   Sign o_uw = Sign::Zero;
   for (int k : axes) {

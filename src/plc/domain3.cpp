@@ -44,7 +44,7 @@ Domain3 build_domain(Plc3 plc) {
   for (int f = 0; f < nf; ++f) {
     Vec3 n = newell_normal(plc.vertices, plc.facets[f].loops[0]);
     const Sign turn = orientation.flip[f] ? -planes[f].outer_turn : planes[f].outer_turn;
-    if (sign_of(coord(n, planes[f].drop)) != turn) n = -1.0 * n;
+    if (sign_of(axis_coord(n, planes[f].drop)) != turn) n = -1.0 * n;
     const double len = norm(n);
     d.facet_normals[f] = len > 0 ? (1.0 / len) * n : n;
   }

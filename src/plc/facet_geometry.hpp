@@ -24,7 +24,6 @@ inline Vec2 project(Vec3 p, int drop) {
   }
 }
 
-inline double coord(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 
 // a, b, c lie on one line (exact: all three axis projections are degenerate).
 bool collinear(Vec3 a, Vec3 b, Vec3 c);

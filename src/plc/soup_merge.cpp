@@ -19,8 +19,6 @@ namespace pqmesh::detail {
 
 namespace {
 
-double coord(const Vec3& p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
-void set_coord(Vec3& p, int axis, double value) { (axis == 0 ? p.x : (axis == 1 ? p.y : p.z)) = value; }
 // The projection that drops `drop` keeps the other axes in cyclic order (as orient2d_projected).
 int u_axis(int drop) { return (drop + 1) % 3; }
 int v_axis(int drop) { return (drop + 2) % 3; }
@@ -60,8 +58,8 @@ Sign cyclic_orientation(const std::vector<Vec3>& V, const int* ids, int k, int d
   for (int i = 1; i < k; ++i) {
     const Vec3& p = V[ids[i]];
     const Vec3& q = V[ids[m]];
-    const double pu = coord(p, ua), qu = coord(q, ua);
-    if (pu < qu || (pu == qu && coord(p, va) < coord(q, va))) m = i;
+    const double pu = axis_coord(p, ua), qu = axis_coord(q, ua);
+    if (pu < qu || (pu == qu && axis_coord(p, va) < axis_coord(q, va))) m = i;
   }
   return orient2d_projected(V[ids[(m + k - 1) % k]], V[ids[m]], V[ids[(m + 1) % k]], drop);
 }
@@ -495,11 +493,11 @@ class Merger {
   bool snap_to_plane(const std::vector<int>& vs, Vec3 n) {
     auto& V = soup_.vertices;
     const int w = dominant_axis(n), u = u_axis(w), v = v_axis(w);
-    const double nw = coord(n, w);
+    const double nw = axis_coord(n, w);
     if (nw == 0) return false;
     auto grid = [](double x, double step) { return std::nearbyint(x / step) * step; };
-    const double c1 = grid(-coord(n, u) / nw, std::ldexp(1.0, -20));
-    const double c2 = grid(-coord(n, v) / nw, std::ldexp(1.0, -20));
+    const double c1 = grid(-axis_coord(n, u) / nw, std::ldexp(1.0, -20));
+    const double c2 = grid(-axis_coord(n, v) / nw, std::ldexp(1.0, -20));
     double m = 0, d = 0;
     for (int i : vs) {
       m = std::max({m, std::abs(V[i].x), std::abs(V[i].y), std::abs(V[i].z)});
@@ -510,13 +508,13 @@ class Merger {
     int e = 0;
     std::frexp(m, &e);
     const double q = std::ldexp(1.0, e - 30);
-    const double u0 = grid(coord(V[vs[0]], u), q), v0 = grid(coord(V[vs[0]], v), q);
-    const double w0 = grid((d - coord(n, u) * u0 - coord(n, v) * v0) / nw, q * std::ldexp(1.0, -20));
+    const double u0 = grid(axis_coord(V[vs[0]], u), q), v0 = grid(axis_coord(V[vs[0]], v), q);
+    const double w0 = grid((d - axis_coord(n, u) * u0 - axis_coord(n, v) * v0) / nw, q * std::ldexp(1.0, -20));
     for (int i : vs) {
-      const double ui = grid(coord(V[i], u), q), vi = grid(coord(V[i], v), q);
-      set_coord(V[i], u, ui);
-      set_coord(V[i], v, vi);
-      set_coord(V[i], w, w0 + (c1 * (ui - u0) + c2 * (vi - v0)));
+      const double ui = grid(axis_coord(V[i], u), q), vi = grid(axis_coord(V[i], v), q);
+      axis_ref(V[i], u) = ui;
+      axis_ref(V[i], v) = vi;
+      axis_ref(V[i], w) = w0 + (c1 * (ui - u0) + c2 * (vi - v0));
     }
     return true;
   }
