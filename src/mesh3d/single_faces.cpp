@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace pqmesh::mesh3d {
 
@@ -29,6 +30,16 @@ std::array<int, 2> two_smallest(const std::array<int, 4>& k) {
     }
   }
   return {a, b};
+}
+
+// The three ids in increasing order (a sorting network: the same triple
+// std::sort gives, without its call; this runs four times per filed
+// tetrahedron).
+std::array<int, 3> sorted3(std::array<int, 3> f) {
+  if (f[0] > f[1]) std::swap(f[0], f[1]);
+  if (f[1] > f[2]) std::swap(f[1], f[2]);
+  if (f[0] > f[1]) std::swap(f[0], f[1]);
+  return f;
 }
 
 struct FiledFace {
@@ -68,8 +79,7 @@ std::vector<std::int64_t> single_faces(const std::vector<std::array<int, 4>>& te
     for (std::size_t j = offset[v]; j < offset[v + 1]; ++j) {
       const auto t = static_cast<std::size_t>(filed[j]);
       for (int i = 0; i < 4; ++i) {
-        std::array<int, 3> f = outward_face(tetrahedra[t], i);
-        std::sort(f.begin(), f.end());
+        const std::array<int, 3> f = sorted3(outward_face(tetrahedra[t], i));
         if (f[0] == static_cast<int>(v)) here.push_back({f[1], f[2], static_cast<std::int64_t>(4 * t) + i});
       }
     }

@@ -257,7 +257,7 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
             continue;
           }
           const mpq_class r = (q(at(v, j)) - q(at(u, j))) / den;
-          x = Pert{};
+          for (mpq_class& y : x.c) y = 0;  // reuses the caller's storage (no Pert temporary)
           x.c[0] = q(at(u, j)) + off * r;
           x.c[static_cast<std::size_t>(detail::kE1 + axis)] = side == 1 ? mpq_class(r) : mpq_class(-r);
         }

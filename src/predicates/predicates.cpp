@@ -92,14 +92,24 @@ bool scale_group(double (&v)[N], int floor_exp) {
       if (x != 0) return false;  // NaN
     return true;
   }
-  int e = 0;
-  std::frexp(m, &e);  // m = f 2^e, f in [1/2, 1)
-  const double floor = std::ldexp(1.0, -floor_exp);
+  int e = 0;  // m = f 2^e, f in [1/2, 1) (frexp); read from the exponent bits when m is normal
+  if (m >= std::numeric_limits<double>::min())
+    e = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7ff) - 1022;
+  else
+    std::frexp(m, &e);
+  // 2^-floor_exp built from its bits (floor_exp is 250 or 400: a normal number).
+  const double floor = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - floor_exp) << 52);
+  // The factor 2^-e as a double when it is a normal number (almost always):
+  // then x * 2^-e is the same double as ldexp(x, -e) (both exact when the
+  // result is normal, both rounded once to nearest otherwise), without the
+  // library call.
+  const bool normal_factor = -e >= -1022 && -e <= 1023;
+  const double factor = normal_factor ? std::bit_cast<double>(static_cast<std::uint64_t>(1023 - e) << 52) : 0.0;
   for (double& x : v) {
     if (x == 0) continue;
     // Exact whenever the result is at least 2^-1022. A value that would fall
     // below the floor (or to zero: a subnormal next to 1) is refused, as is NaN.
-    x = std::ldexp(x, -e);
+    x = normal_factor ? x * factor : std::ldexp(x, -e);
     if (!(std::abs(x) >= floor)) return false;
   }
   return true;
