@@ -113,8 +113,13 @@ class Assembler {
     const double d = plane.distance(C);
     if (d <= -h / 4) {
       const int v = centre_vertex(centre);
-      for (const Tri& t : tris) cone(leaf, t, v);
-      fan(leaf, chord, plane, VertexKind::FacetCentre, centre, v);
+      double cone_worst = 0;
+      for (const Tri& t : tris) {
+        cone(leaf, t, v);
+        cone_worst = std::max(cone_worst, tet_shape(book_.point(t[0]), book_.point(t[2]), book_.point(t[1]),
+                                                    book_.point(v)));
+      }
+      fan(leaf, chord, plane, VertexKind::FacetCentre, centre, v, cone_worst);
       ++out_.stats.inside;
     } else if (d < h / 4) {
       const VertexKey vk{VertexKind::BoxOnFacet, centre, {}, facet};
@@ -379,25 +384,88 @@ class Assembler {
     return chord;
   }
 
-  // The mean of the polygon's vertices, rounded onto F (a point of the
-  // relative interior of the convex polygon F ∩ b), keyed (kind, box centre, F).
-  int polygon_centre(const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre) {
+  // The mean of the polygon's vertices (a point of the relative interior of
+  // the convex polygon F ∩ b; not yet rounded onto F).
+  Vec3 vertex_mean(const Chords& chord) const {
     std::set<int> poly;
     for (const auto& [edge, directed] : chord) poly.insert({edge.first, edge.second});
     Vec3 mean;
     for (const int p : poly) mean = mean + book_.point(p);
-    mean = (1.0 / static_cast<double>(poly.size())) * mean;
+    return (1.0 / static_cast<double>(poly.size())) * mean;
+  }
+
+  // The vertex mean rounded onto F, keyed (kind, box centre, F).
+  int polygon_centre(const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre) {
+    const Vec3 mean = vertex_mean(chord);
     const VertexKey gk{kind, centre, {}, plane.facet()};
     return book_.id(gk, [&] { return plane.settle(mean, dominant_axis(plane.normal())); });
+  }
+
+  // §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean
+  // is pulled towards the side with more vertices: on a long thin polygon
+  // (F clipping a box edge, one face beside it split into small squares:
+  // bounded random seed 58, docs/ALGORITHM.md §12.5) it lies almost on the
+  // line of a chord and that fan tetrahedron is flat (aspect 16,433). So when
+  // the worst fan tetrahedron from the mean is worse (tet_shape, compared
+  // only) than `bar` (the worst cone of the box: only then is the fan the
+  // box's weakest part), the polygon's area centroid and its boundary's
+  // length-weighted centroid are tried, each rounded onto F and taken only if
+  // every one of its fan tetrahedra is positive by exact orient3d and its
+  // worst is better. Returns the point (rounded onto F).
+  Vec3 fan_centre(const Chords& chord, const FacetPlane& plane, int v, double bar) const {
+    const int axis = dominant_axis(plane.normal());
+    const Vec3 mean = vertex_mean(chord);
+    const Vec3 apex = book_.point(v);
+    auto worst = [&](Vec3 g, bool exact) {
+      double w = 0;
+      for (const auto& [edge, directed] : chord) {
+        const Vec3 a = book_.point(directed.first), b = book_.point(directed.second);
+        if (exact && orient3d(a, b, g, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
+        w = std::max(w, tet_shape(a, b, g, apex));
+      }
+      return w;
+    };
+    Vec3 best = plane.settle(mean, axis);
+    if (!(bar < std::numeric_limits<double>::infinity())) return best;
+    double best_shape = worst(best, false);
+    if (!(best_shape > bar)) return best;
+    // Area centroid: the fan triangles (a, b, mean) weighted by their signed
+    // area along F's normal (the chords turn one way around F ∩ b); boundary
+    // centroid: chord midpoints weighted by chord length.
+    Vec3 area_sum, length_sum;
+    double area = 0, length = 0;
+    for (const auto& [edge, directed] : chord) {
+      const Vec3 a = book_.point(directed.first), b = book_.point(directed.second);
+      const double s = dot(cross(a - mean, b - mean), plane.normal());
+      area_sum = area_sum + (s / 3) * (a + b + mean);
+      area += s;
+      const double l = norm(b - a);
+      length_sum = length_sum + (l / 2) * (a + b);
+      length += l;
+    }
+    std::vector<Vec3> candidates;
+    if (area != 0) candidates.push_back((1 / area) * area_sum);
+    if (length > 0) candidates.push_back((1 / length) * length_sum);
+    for (const Vec3& c : candidates) {
+      const Vec3 g = plane.settle(c, axis);
+      const double s = worst(g, true);
+      if (s < best_shape) {
+        best = g;
+        best_shape = s;
+      }
+    }
+    return best;
   }
 
   // Fan of F ∩ b from its central point g, coned to v. P ∧ b is convex and
   // bounded by the outward face triangles and F ∩ b, so edge a -> b of a face
   // triangle runs b -> a in F ∩ b oriented outward (away from v): (b, a, g) is
   // an outward triangle with v inside, hence (a, b, g, v) is positive.
+  // `bar` (facet boxes): see fan_centre; +infinity keeps the vertex mean.
   void fan(std::int32_t leaf, const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre,
-           int v) {
-    const int g = polygon_centre(chord, plane, kind, centre);
+           int v, double bar = std::numeric_limits<double>::infinity()) {
+    const VertexKey gk{kind, centre, {}, plane.facet()};
+    const int g = book_.id(gk, [&] { return fan_centre(chord, plane, v, bar); });
     for (const auto& [edge, directed] : chord) tet(leaf, "fan", directed.first, directed.second, g, v);
   }
 

@@ -6,6 +6,14 @@
 // square dispatcher (square_cases.hpp), so all kinds share one triangulation
 // of every square.
 //
+// Facet box b (facet F, §4.5.4), d the box centre's signed distance to F's
+// plane: d <= -h/4: the centre coned to the π-triangles and to the fan of
+// F ∩ b from a central point g of it; |d| < h/4: the centre moved onto F,
+// coned to the π-triangles; else prisms (cones from the centre clipped by
+// F). g: the vertex mean of F ∩ b, unless its worst fan tetrahedron is worse
+// than the box's worst cone; then the polygon's area centroid or its
+// boundary's length-weighted centroid if better, every fan tetrahedron
+// positive by exact orient3d (fan_centre in facet_boxes.cpp).
 // Edge box b (edge E, facets F, G): v = the midpoint of E ∩ I(b), i.e. of the
 // box's two Case B vertices where E enters and leaves it (wherever the square
 // code put them, warped_crossing.hpp; the midpoint of E ∩ the prewarped cube
