@@ -437,15 +437,30 @@ template <int D>
 void Tree<D>::leaves_containing(const Point& p, std::vector<std::int32_t>& out) const {
   out.clear();
   if (!closed_contains(at(0).key, p)) return;
-  std::vector<std::int32_t> stack{0};  // node 0 is the head of the root key
-  while (!stack.empty()) {
-    const std::int32_t h = stack.back();
-    stack.pop_back();
+  // Depth-first over the keys whose closed cube holds p. A pop pushes at most
+  // 2^D children and keys exist down to level kTreeMaxLevel at most, so the
+  // stack never holds more than 1 + (2^D - 1) (kTreeMaxLevel + 1) keys.
+  std::array<std::int32_t, 1 + (kChildren - 1) * (kTreeMaxLevel + 1)> stack;
+  std::size_t top = 0;
+  stack[top++] = 0;  // node 0 is the head of the root key
+  while (top > 0) {
+    const std::int32_t h = stack[--top];
     collect_key(h, out);
     if (!any_split(h)) continue;
+    // p lies in the closed cube of h, so child c holds p iff p is on the
+    // child's side of each mid-plane (or on it). The mid-plane is the child's
+    // own plane, the same exact double closed_contains would compare with.
+    const Key& k = at(h).key;
+    std::array<bool, D> low{}, high{};
+    for (int a = 0; a < D; ++a) {
+      const double mid = key_plane(k.child(1 << a), a, false);
+      low[a] = p[a] <= mid;
+      high[a] = p[a] >= mid;
+    }
     for (int c = 0; c < kChildren; ++c) {
-      const Key ck = at(h).key.child(c);
-      if (closed_contains(ck, p)) stack.push_back(find(ck));
+      bool holds = true;
+      for (int a = 0; a < D; ++a) holds = holds && (((c >> a) & 1) ? high[a] : low[a]);
+      if (holds) stack[top++] = find(k.child(c));
     }
   }
   std::sort(out.begin(), out.end());
