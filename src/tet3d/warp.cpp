@@ -56,6 +56,14 @@ std::pair<Vec3, Vec3> closest_points(Vec3 p, Vec3 q, Vec3 a, Vec3 b) {
   return {p + s * d1, a + t * d2};
 }
 
+// Distance from p to segment [a, b] (a construction, for thresholds).
+double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 d = b - a;
+  const double len2 = dot(d, d);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * d));
+}
+
 }  // namespace
 
 double facet_distance(const Domain3& domain, int facet, Vec3 x) {
@@ -181,15 +189,87 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       if (f.l0.f[i] != f.l1.f[i] && (p.f[i] < f.l0.f[i] || p.f[i] > f.l1.f[i])) return false;
     return same == 2;
   };
+  // The ring points of each translated face (indices into candidates).
+  std::vector<std::vector<std::size_t>> face_points(shifts.size());
   if (!shifts.empty())
-    for (const WarpCandidate& c : candidates) {
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const WarpCandidate& c = candidates[i];
       if (c.facets.empty() || !c.square_corners.empty()) continue;
       const std::int32_t level = std::max(c.level, corners.finest_level(c.p));
       if (level < 0) continue;
       const double hc = std::ldexp(tree.side(0), -level);
-      for (FaceShift& f : shifts)
-        if (on_line(f, c.p)) f.h = std::min(f.h, hc);
+      for (std::size_t s = 0; s < shifts.size(); ++s) {
+        if (on_line(shifts[s], c.p)) shifts[s].h = std::min(shifts[s].h, hc);
+        if (on_face(shifts[s], c.p)) face_points[s].push_back(i);
+      }
     }
+  // Adaptive length (gap filled, suite seeds 135 and 67, docs/ALGORITHM.md
+  // §12.5). When E runs nearly in the translated face G and crosses its
+  // plane inside B (seed 135: 2.1°), the face moves away from E below that
+  // crossing but towards E's line beyond it: the full translation (h/8) c n
+  // carried ring segments of G across E's line, those moves were refused
+  // point by point, G bent past the apex on E, and the rebuild loop froze
+  // the box back to the cube. §4.3 moves points away from what they are
+  // near, never onto it, so G takes the largest 2^-k (k = 0..4) of its
+  // translation under which every ring point v of it keeps, with h' the
+  // smallest box using v:
+  //   * its exact side of every facet of the boxes using v (orient3d, the
+  //     side rule of `accept`);
+  //   * for every ring segment [v, w] crossed by F or G of a P edge between
+  //     two of those facets, the exact side of E's line it passes, w moved
+  //     alike when it lies on the face (the crossing rule of `accept`);
+  //   * its clearance to each of those facets: above h'/16 if it was, else
+  //     no smaller (a facet nearly parallel to G: seed 135's facet 3 at
+  //     11.6°), and to each of those P edges: above h'/8 if it was, else no
+  //     smaller (the box across G may be an edge box of another P edge).
+  // The length is one per face, so the face stays planar; no fraction
+  // qualifies: the face is not translated (the first pass's line moves, as
+  // without the box). The clearances are constructions (thresholds, either
+  // outcome valid); the side tests are exact.
+  for (std::size_t s = 0; s < shifts.size(); ++s) {
+    FaceShift& f = shifts[s];
+    if (!(f.h < INFINITY)) continue;
+    double fraction = 0;
+    for (double t = 1.0; t >= 1.0 / 16 && fraction == 0; t /= 2) {
+      const Vec3 m = (t * f.h / 8) * f.unit;
+      bool fits = true;
+      for (std::size_t k = 0; k < face_points[s].size() && fits; ++k) {
+        const WarpCandidate& c = candidates[face_points[s][k]];
+        const Vec3 x0 = grid_coordinates(tree, c.p), y = x0 + m;
+        const double hp = std::ldexp(tree.side(0), -std::max(c.level, corners.finest_level(c.p)));
+        for (const int g : c.facets) {
+          const FacetPlane& plane = plane_of(g);
+          if (plane.side(x0) == Sign::Zero) continue;  // not moved (exact boundary point)
+          if (plane.side(y) != plane.side(x0)) fits = false;
+          const double d0 = facet_distance(domain, g, x0), d1 = facet_distance(domain, g, y);
+          if (!(d1 >= std::min(d0, hp / 16)) || (d0 > hp / 16 && !(d1 > hp / 16))) fits = false;
+        }
+        for (const int e : edges_between(c.facets)) {
+          const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
+          const Vec3 ea = pv[static_cast<std::size_t>(de.a)], eb = pv[static_cast<std::size_t>(de.b)];
+          const double d0 = segment_distance(x0, ea, eb), d1 = segment_distance(y, ea, eb);
+          if (!(d1 >= std::min(d0, hp / 8)) || (d0 > hp / 8 && !(d1 > hp / 8))) fits = false;
+          // The crossing rule of `accept` below, with the face's ring
+          // neighbours translated alike: a ring segment crossed by F or G
+          // keeps the side of E's line it passes. E runs nearly in the face
+          // and crosses its plane inside B (seed 135: 2°), so beyond that
+          // crossing the face moves towards E's line and would pass it.
+          const EdgeCone& ec = cone_of(e);
+          for (const GridPoint& w : c.neighbours) {
+            const Vec3 w0 = grid_coordinates(tree, w), w1 = on_face(f, w) ? w0 + m : w0;
+            const bool crossed = ec.f().side(x0) * ec.f().side(w0) == Sign::Negative ||
+                                 ec.g().side(x0) * ec.g().side(w0) == Sign::Negative;
+            if (crossed && orient3d(ec.a(), ec.b(), x0, w0) != orient3d(ec.a(), ec.b(), y, w1)) fits = false;
+          }
+        }
+      }
+      if (fits) fraction = t;
+    }
+    if (fraction == 0)
+      f.h = INFINITY;  // not translated
+    else
+      f.unit = fraction * f.unit;
+  }
   // The translation of p: per (face plane, E) the largest of the shifts
   // whose face holds p; and the P edges it answers for (their line moves
   // are not added again).

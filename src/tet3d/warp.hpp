@@ -105,7 +105,9 @@ struct EdgeBoxBounds {
 // `frozen` (may be null): points never moved (counted in frozen_left when they would be).
 // `reflex_copies` false: no Fig. 4.7 copies, a slot vertex stays (reflex_left).
 // `edge_boxes`: the edge boxes whose faces through a close box edge are
-// translated (warp.cpp, "face translations"); empty: none.
+// translated (warp.cpp, "face translations"), each face by the largest
+// 2^-k (k = 0..4) of its move that keeps its points' side decisions and
+// clearances (warp.cpp, "adaptive length"); empty: none.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,

@@ -320,8 +320,12 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
     std::vector<double> angles, radii;
     star_loop(rng, {}, n, 0.35, 1.0, &angles, &radii);
     // Occasional deep notches make the loop strongly nonconvex.
+    int notches = 0;
     for (double& r : radii)
-      if (rng.chance(o.notch_probability)) r *= 0.3;
+      if (rng.chance(o.notch_probability)) {
+        r *= 0.3;
+        ++notches;
+      }
     int spikes = 0;
     std::vector<char> locked(angles.size(), 0);  // spike vertices keep their fine position
     if (rng.chance(o.spike_probability)) {
@@ -349,11 +353,13 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
       outer = std::move(coarse);
       out.snapped = snapped;
       out.spikes = spikes;
+      out.notches = notches;
       break;
     }
     if (loop_simple(L) && loop_turn(L) == Sign::Positive) {
       outer = std::move(L);
       out.spikes = spikes;
+      out.notches = notches;
       break;
     }
     if (attempt > 1000) throw std::logic_error("random_polygon: no valid outer loop");  // never observed
@@ -372,8 +378,19 @@ PolygonWithHoles make_polygon(Rng& rng, const PolygonOptions& o) {
     // A notch: a thin wedge of the domain poking into the hole (a sharp
     // convex corner of the domain at the hole's deep vertex).
     std::vector<char> locked(angles.size(), 0);
-    if (m >= 4 && rng.chance(0.5 * o.spike_probability))
-      insert_spike(rng, angles, radii, locked, rho, o.min_spike_degrees, o.max_spike_degrees, true);
+    if (m >= 4 && rng.chance(0.5 * o.spike_probability)) {
+      // The notch's draws are made even when hole_notches is off, so that
+      // option changes no other draw of the stream.
+      std::vector<double> notched_angles = angles, notched_radii = radii;
+      std::vector<char> notched_locked = locked;
+      if (insert_spike(rng, notched_angles, notched_radii, notched_locked, rho, o.min_spike_degrees,
+                       o.max_spike_degrees, true) &&
+          o.hole_notches) {
+        angles = std::move(notched_angles);
+        radii = std::move(notched_radii);
+        locked = std::move(notched_locked);
+      }
+    }
     Loop C = from_polar(c, angles, radii);
     for (Vec2& p : C) p = snap(p, bits);
     if (!strict_kernel_point(c, C) || !fits(C, outer, holes) || !clear_of(C, outer, holes, o.min_clearance)) continue;
@@ -718,6 +735,28 @@ PolyhedronOptions suite_polyhedron_options() {
   return o;
 }
 
+PolyhedronOptions every_run_polyhedron_options() {
+  PolyhedronOptions o = suite_polyhedron_options();
+  o.polygon.max_vertices = 5;
+  o.polygon.notch_probability = 0.08;
+  o.polygon.spike_probability = 0.125;
+  o.polygon.min_hole_vertices = 4;
+  o.polygon.max_hole_vertices = 5;
+  o.polygon.min_hole_radius = 0.25;
+  o.polygon.max_hole_radius = 0.35;
+  o.polygon.hole_notches = false;
+  o.polygon.min_gap = 0.25;
+  o.polygon.min_clearance = 0.25;
+  o.polygon.near_touch_probability = 0;
+  o.near_touch_probability = 0;
+  o.min_height = 0.75;
+  o.max_height = 1.0;
+  o.cavity_probability = 0.5;
+  o.min_cavity_half_width = 0.1;
+  o.max_cavity_half_width = 0.15;
+  return o;
+}
+
 Plc3 random_polyhedron(std::uint64_t seed, const PolyhedronOptions& options) {
   return random_polyhedron_detail(seed, options).plc;
 }
@@ -737,7 +776,8 @@ std::string describe_polyhedron(std::uint64_t seed, const PolyhedronOptions& opt
   s << "seed " << seed << ": " << (r.right_prism() ? "right prism" : "frustum (top scale ") ;
   if (!r.right_prism()) s << r.top_scale << ")";
   s << ", height " << r.height << ", base outer " << r.base.loops[0].size() << " vertices, "
-    << r.base.loops.size() - 1 << " through-holes, " << r.base.spikes << " spikes, " << r.cavities.size()
+    << r.base.loops.size() - 1 << " through-holes, " << r.base.spikes << " spikes, " << r.base.notches
+    << " notches, " << r.cavities.size()
     << " cavities, " << r.plc.vertices.size() << " vertices, " << r.plc.facets.size() << " facets";
   return s.str();
 }

@@ -61,5 +61,36 @@ TEST_P(WorstEdgeBox, ColumnIsWarpedAndTheBoundHolds) {
 
 INSTANTIATE_TEST_SUITE_P(BoundedSeeds, WorstEdgeBox, ::testing::Values(76u, 125u));
 
+// Suite-family seed 135 (a 4-gon frustum, alpha 33.0 deg; docs/ALGORITHM.md
+// §12.5 "Gap filled (stop 16)"): the side edge E of an edge box runs 2.1 deg
+// off the box face x = 0 and crosses its plane inside the box. The stop-15
+// face translation (h/8 c n, full length) carried the face's ring segments
+// across E's line beyond that crossing; the moves were refused point by
+// point, the face bent, and the rebuild loop froze 11-13 points and the
+// whole box back to the cube (aspect x alpha 6,333). The face now takes the
+// largest 2^-k of its translation that keeps every side decision (1/4
+// here), nothing is frozen, and the seed stays below the stop-15 maximum of
+// the bounded family, seeds 0..39 (1,713.2, seed 33), which 6,333 broke.
+// Cost: about 1 s cpu in Release (156k tetrahedra, the check included).
+TEST(WorstEdgeBoxSuite, FaceNearlyAlongEIsTranslatedPartly) {
+  const Domain3 d = make_domain(test::random_polyhedron(135, test::suite_polyhedron_options()));
+  mv3d::OctreeOptions oo;
+  oo.separate = true;
+  oo.generic_grid = true;
+  mv3d::OctreeBuilder builder(d, oo);
+  builder.build();
+  const mesh3d::BoxPlan plan = mesh3d::plan_all_kinds(builder);
+  const tet3d::CornerSet corners(builder);
+  tet3d::BoxMeshOptions bo;
+  bo.warp = true;
+  const tet3d::BoxMesh m = tet3d::mesh_boxes(builder.tree(), corners, d, plan.jobs, bo);
+  const CheckReport report = check_mesh(m.mesh, d);
+  ASSERT_TRUE(report.valid()) << report.to_text();
+  EXPECT_EQ(m.warp_inverting_left, 0) << "warps frozen by the rebuild loop";
+  const double alpha = compute_alpha(d.plc).radians;
+  const double aspect = quality_report(m.mesh).aspect_ratio.max;
+  EXPECT_LE(test::aspect_times_alpha(aspect, alpha), 1713.2) << "max aspect " << aspect << " at alpha " << alpha;
+}
+
 }  // namespace
 }  // namespace pqmesh
