@@ -38,20 +38,20 @@
 //    kBoundedSeedsPerShard.
 //  - "harsh": harsh_options() below, 1e-2 gaps and 5-degree spikes; seeds
 //    0..199 in kHarshShards DISABLED instances of kHarshSeedsPerShard.
-// Test time. Measured 2026-12-01 (Release, shared 2-core machine at load
-// ~15, so cpu times are inflated; cpu s per seed including check_mesh and
-// quality_report; two processes of 100 seeds):
-//  - every-run seeds 0..199: all 200 meshed valid, none threw, no unwarped
-//    fallback; 188.6 cpu s in all (over the ~100-120 s budget; 3.5x less
-//    than the suite family): min 0.08 s, median 0.46 s, 90th percentile
-//    2.1 s, max 12.1 s (seed 70, frustum + hole + spike); 15k-1.6M
-//    tetrahedra, median 130k; shards 1.6-14.6 s. Cost by feature (seeds,
-//    cpu s): plain 82, 31 s; hole 11, 50 s; spike 18, 51 s; cavity 17, 38 s.
-//    aspect * alpha median 192, 90th percentile 475; seed 10 (a plain 5-gon
-//    frustum, top scale 3/4, alpha 70.1 deg, aspect 26,412) FAILS the
-//    bound: 32,328 > kAspectAlphaC = 25,000, a mesher quality defect
-//    (docs/ALGORITHM.md §13), so shard 2 fails; next seed 36 11,713 (a
-//    5-gon prism with 3 notches), seed 197 6,283.
+// Test time. Measured 2026-12-01 (Release; cpu s per seed including
+// check_mesh and quality_report):
+//  - every-run seeds 0..199, one process after the stop-16 mesher changes
+//    (facet-box fan point, adaptive face translations; machine lightly
+//    loaded): all 200 meshed valid, none threw, no unwarped fallback;
+//    175.9 cpu s in all (about 180 s of ctest time at -j2, 90 s wall):
+//    median 0.46 s, max 13.9 s (seed 70, frustum + hole + spike); 15k-1.6M
+//    tetrahedra, median 130k. Before those changes the helper measured
+//    188.6 cpu s at load ~15 and seed 10 (a plain 5-gon frustum) at
+//    aspect * alpha 32,328 > kAspectAlphaC: the fan-point rule brought it
+//    to 349.5. Now aspect * alpha median 188, 90th percentile 451, max
+//    11,713 (seed 36, a 5-gon prism with 3 notches, alpha 21.3 deg, aspect
+//    31,539), then 6,283 (seed 197), 3,484 (30), 3,437 (60), all others
+//    below 1,000.
 //  - suite seeds 0..199: ALL 200 valid, none threw, aspect * alpha max
 //    21,215 (seed 92); 652 cpu s in all (median 1.45 s, max 45.1 s, seed
 //    92; 26k-3.9M tetrahedra, median 311k), 6.5x the ~100 s budget of the
