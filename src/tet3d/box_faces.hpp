@@ -23,11 +23,13 @@
 // the same triangles (with opposite orientation), and two squares sharing an
 // edge split it at the same points.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "mv3d/octree_builder.hpp"
+#include "pqmesh/vec.hpp"
 #include "tet3d/first_use_index.hpp"
 #include "tet3d/grid_point.hpp"
 
@@ -78,6 +80,16 @@ struct FaceSquare {
     return c;
   }
 };
+
+// The distance of a and b within S's plane (axes u and v only). §4.4's
+// choices C1/C2 and D1/D2 ask how far a chord runs from S's centre *within
+// S*; the chord lies on the warped square and the centre is prewarped, and
+// warping may move a whole face along its normal (two first-pass moves of
+// h/8 add up on a face near an edge running across it: every-run seed 36),
+// so a 3-D distance would count that move as distance from the centre.
+inline double in_square_distance(const FaceSquare& s, Vec3 a, Vec3 b) {
+  return std::hypot(axis_coord(a, s.u) - axis_coord(b, s.u), axis_coord(a, s.v) - axis_coord(b, s.v));
+}
 
 // The squares of the finer side inside the aligned square `s` (split into
 // four while its centre is in `corners`, as above), in a fixed order. Used for

@@ -89,7 +89,7 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
     for (std::size_t j = 0; j + 1 < walk.size(); ++j) out.push_back({apex, walk[j].id, walk[j + 1].id});
     if (close_chord) out.push_back({apex, walk.back().id, walk.front().id});
   };
-  if (norm(M - C) <= side_len / 4) {
+  if (in_square_distance(s, M, C) <= side_len / 4) {
     const VertexKey key{VertexKind::ChordMidpoint, centre, {}, plane.facet()};
     fan(book.id(key, [&] { return plane.settle(M, settle_axis(s, plane)); }), false);
     return CutCase::C1;

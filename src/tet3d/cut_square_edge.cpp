@@ -331,7 +331,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
   for (int t = 0; t < 2; ++t) {
     const std::size_t j = chord_at[static_cast<std::size_t>(t)];
     mid[t] = 0.5 * (book.point(pid(j)) + book.point(pid(j + 1)));
-    dist[t] = norm(mid[t] - C);
+    dist[t] = in_square_distance(s, mid[t], C);
   }
   if (std::min(dist[0], dist[1]) <= side_len / 4) {
     const int t = dist[0] <= dist[1] ? 0 : 1;
