@@ -40,18 +40,17 @@
 //    0..199 in kHarshShards DISABLED instances of kHarshSeedsPerShard.
 // Test time. Measured 2026-12-01 (Release; cpu s per seed including
 // check_mesh and quality_report):
-//  - every-run seeds 0..199, one process after the stop-16 mesher changes
-//    (facet-box fan point, adaptive face translations; machine lightly
-//    loaded): all 200 meshed valid, none threw, no unwarped fallback;
-//    175.9 cpu s in all (about 180 s of ctest time at -j2, 90 s wall):
-//    median 0.46 s, max 13.9 s (seed 70, frustum + hole + spike); 15k-1.6M
-//    tetrahedra, median 130k. Before those changes the helper measured
-//    188.6 cpu s at load ~15 and seed 10 (a plain 5-gon frustum) at
-//    aspect * alpha 32,328 > kAspectAlphaC: the fan-point rule brought it
-//    to 349.5. Now aspect * alpha median 188, 90th percentile 451, max
-//    11,713 (seed 36, a 5-gon prism with 3 notches, alpha 21.3 deg, aspect
-//    31,539), then 6,283 (seed 197), 3,484 (30), 3,437 (60), all others
-//    below 1,000.
+//  - every-run seeds 0..199, one process, on the final stop-16 code
+//    (facet-box fan point, adaptive face translations, Cases C/D measured
+//    within the square): all 200 meshed valid, none threw, no unwarped
+//    fallback; 161.4 cpu s in all (about 180 s of ctest time at -j2, 90 s
+//    wall): median 0.46 s, max 13.3 s (seed 70, frustum + hole + spike);
+//    15k-1.6M tetrahedra, median 130k. aspect * alpha median 185, 90th
+//    percentile 431, max 6,283 (seed 197, a two-facet box), then 3,484
+//    (seed 30), every other seed below 1,000. On the way: seed 10 (a plain
+//    5-gon frustum) measured 32,328 > kAspectAlphaC before the fan-point
+//    rule (now 349.5), seed 36 11,713 before Cases C/D were measured within
+//    the square (now 92.5).
 //  - suite seeds 0..199: ALL 200 valid, none threw, aspect * alpha max
 //    21,215 (seed 92); 652 cpu s in all (median 1.45 s, max 45.1 s, seed
 //    92; 26k-3.9M tetrahedra, median 311k), 6.5x the ~100 s budget of the
