@@ -36,6 +36,7 @@
 #include "predicates/predicates.hpp"
 #include "tet3d/facet_boxes.hpp"
 #include "tet3d/facet_plane.hpp"
+#include "half_space_fixture.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
@@ -107,27 +108,11 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
     Vec3 n{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
     if (std::min({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)}) < 0.15 * norm(n)) continue;
     // Two directions in the plane, then a triangle of side ~100 around o.
-    const Vec3 e1 = cross(n, std::fabs(n.x) < 0.5 * norm(n) ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-    const Vec3 e2 = cross(n, e1);
-    const Vec3 a = o + (100 / norm(e1)) * e1, b = o + (-50 / norm(e1)) * e1 + (87 / norm(e2)) * e2,
-               c = o + (-50 / norm(e1)) * e1 + (-87 / norm(e2)) * e2;
-    const Vec3 inside = o + (-100 / norm(n)) * n;
-    Plc3 plc;
-    plc.vertices = {a, b, c, inside};
-    const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-    for (const auto& f : faces) {
-      Facet3 fc;
-      fc.loops.push_back({f[0], f[1], f[2]});
-      plc.facets.push_back(fc);
-    }
-    const Domain3 dom = make_domain(plc);
-    int f0 = -1;
-    for (std::size_t f = 0; f < dom.plc.facets.size(); ++f) {
-      const auto& loop = dom.plc.facets[f].loops[0];
-      if (std::find(loop.begin(), loop.end(), 3) == loop.end()) f0 = static_cast<int>(f);
-    }
-    ASSERT_GE(f0, 0);
-    const FacetPlane plane(dom, f0);
+    const HalfSpaceDomain half =
+        half_space_domain(o, n, cross(n, std::fabs(n.x) < 0.5 * norm(n) ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+    ASSERT_GE(half.facet, 0);
+    const Domain3& dom = half.domain;
+    const FacetPlane plane(dom, half.facet);
 
     OctTree t(RootCube<3>{{0, 0, 0}, 1});
     for (int i = 0; i < 40; ++i) {
@@ -147,7 +132,7 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
         out = out || s == Sign::Positive;
       }
       if (in && !out) jobs.push_back({leaf, -1});
-      if (in && out) jobs.push_back({leaf, f0});
+      if (in && out) jobs.push_back({leaf, half.facet});
     }
     BoxMeshOptions opt;
     opt.warp = warp;
@@ -197,7 +182,7 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
       }
       if (on_cube) continue;
       bool near_f = true;
-      for (const int v : f) near_f = near_f && within_ulp_of_plane(V[static_cast<std::size_t>(v)], a, b, c);
+      for (const int v : f) near_f = near_f && within_ulp_of_plane(V[static_cast<std::size_t>(v)], dom.plc.vertices[0], dom.plc.vertices[1], dom.plc.vertices[2]);
       EXPECT_TRUE(near_f) << "trial " << trial << ": boundary triangle off the cube and off F";
       on_f += near_f;
     }

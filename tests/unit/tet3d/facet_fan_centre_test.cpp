@@ -31,6 +31,7 @@
 #include "predicates/predicates.hpp"
 #include "tet3d/facet_boxes.hpp"
 #include "tet3d/facet_plane.hpp"
+#include "half_space_fixture.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
@@ -46,25 +47,10 @@ TEST(FacetFanCentre, ThinPolygonAlongABoxEdgeGetsACentralFanPoint) {
   // tetrahedron with F as a face and its fourth vertex far on F's negative
   // side (as facet_boxes_test.cpp).
   const Vec3 p0 = o + (-c * h / dot(n, n)) * n;
-  const Vec3 e1 = cross(n, Vec3{0, 0, 1});
-  const Vec3 e2 = cross(n, e1);
-  Plc3 plc;
-  plc.vertices = {p0 + (100 / norm(e1)) * e1, p0 + (-50 / norm(e1)) * e1 + (87 / norm(e2)) * e2,
-                  p0 + (-50 / norm(e1)) * e1 + (-87 / norm(e2)) * e2, p0 + (-100 / norm(n)) * n};
-  const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-  for (const auto& f : faces) {
-    Facet3 fc;
-    fc.loops.push_back({f[0], f[1], f[2]});
-    plc.facets.push_back(fc);
-  }
-  const Domain3 dom = make_domain(plc);
-  int f0 = -1;
-  for (std::size_t f = 0; f < dom.plc.facets.size(); ++f) {
-    const auto& loop = dom.plc.facets[f].loops[0];
-    if (std::find(loop.begin(), loop.end(), 3) == loop.end()) f0 = static_cast<int>(f);
-  }
-  ASSERT_GE(f0, 0);
-  const FacetPlane plane(dom, f0);
+  const HalfSpaceDomain half = half_space_domain(p0, n, cross(n, Vec3{0, 0, 1}));
+  ASSERT_GE(half.facet, 0);
+  const Domain3& dom = half.domain;
+  const FacetPlane plane(dom, half.facet);
 
   OctTree t(RootCube<3>{{0, 0, 0}, 1});
   const std::int32_t first = t.split(0);
@@ -82,9 +68,9 @@ TEST(FacetFanCentre, ThinPolygonAlongABoxEdgeGetsACentralFanPoint) {
       out = out || s == Sign::Positive;
     }
     if (in && !out) jobs.push_back({leaf, -1});
-    if (in && out) jobs.push_back({leaf, f0});
+    if (in && out) jobs.push_back({leaf, half.facet});
   }
-  ASSERT_TRUE(std::any_of(jobs.begin(), jobs.end(), [&](const BoxJob& j) { return j.leaf == b && j.facet == f0; }));
+  ASSERT_TRUE(std::any_of(jobs.begin(), jobs.end(), [&](const BoxJob& j) { return j.leaf == b && j.facet == half.facet; }));
   BoxMeshOptions opt;
   opt.warp = true;
   const BoxMesh m = mesh_boxes(t, corners, dom, jobs, opt);
@@ -119,7 +105,7 @@ TEST(FacetFanCentre, ThinPolygonAlongABoxEdgeGetsACentralFanPoint) {
   ASSERT_GE(chords.size(), 6u);
   // g lies on F (rounded within an ulp of its plane, §12.2).
   const Vec3 G = m.mesh.vertices[static_cast<std::size_t>(g)];
-  EXPECT_TRUE(within_ulp_of_plane(G, plc.vertices[0], plc.vertices[1], plc.vertices[2]));
+  EXPECT_TRUE(within_ulp_of_plane(G, dom.plc.vertices[0], dom.plc.vertices[1], dom.plc.vertices[2]));
   // The vertex mean of F ∩ b (the fan point before), settled onto F along
   // the dominant axis of F's normal (x here) as facet_boxes.cpp does, and
   // the worst of the fan it would have made.

@@ -1,0 +1,40 @@
+#pragma once
+// A domain that is a half-space near the unit cube: a huge tetrahedron (side
+// about 170) with one face F in the plane through `o` with normal `n`, and
+// its fourth vertex 100 away on F's negative side, so P lies on F's negative
+// side around o. `e1` is a direction in F (nonzero, orthogonal to n).
+#include <algorithm>
+#include <cstddef>
+
+#include "pqmesh/domain.hpp"
+#include "pqmesh/plc.hpp"
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::tet3d {
+
+struct HalfSpaceDomain {
+  Domain3 domain;
+  int facet = -1;  // F's index in domain.plc.facets (-1: not found, a fixture bug)
+};
+
+inline HalfSpaceDomain half_space_domain(Vec3 o, Vec3 n, Vec3 e1) {
+  const Vec3 e2 = cross(n, e1);
+  Plc3 plc;
+  plc.vertices = {o + (100 / norm(e1)) * e1, o + (-50 / norm(e1)) * e1 + (87 / norm(e2)) * e2,
+                  o + (-50 / norm(e1)) * e1 + (-87 / norm(e2)) * e2, o + (-100 / norm(n)) * n};
+  const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  for (const auto& f : faces) {
+    Facet3 fc;
+    fc.loops.push_back({f[0], f[1], f[2]});
+    plc.facets.push_back(fc);
+  }
+  HalfSpaceDomain out{make_domain(plc), -1};
+  // F is the facet without the fourth vertex (make_domain may reorder facets).
+  for (std::size_t f = 0; f < out.domain.plc.facets.size(); ++f) {
+    const auto& loop = out.domain.plc.facets[f].loops[0];
+    if (std::find(loop.begin(), loop.end(), 3) == loop.end()) out.facet = static_cast<int>(f);
+  }
+  return out;
+}
+
+}  // namespace pqmesh::tet3d
