@@ -12,7 +12,8 @@
 //
 // Run:  test_mesh3d --gtest_also_run_disabled_tests --gtest_filter='*WorstBoxProbe*'
 // Env:  PQMESH_PROBE_SEEDS="58,76,122,125" (default), PQMESH_PROBE_SHOW=3
-//       (tetrahedra printed per seed).
+//       (tetrahedra printed per seed), PQMESH_PROBE_FAMILY=bounded (default),
+//       suite or every_run (the random family the seeds index).
 // The mesh is checked (check_mesh) like every mesh a test makes; the probe
 // asserts nothing about quality (that is random_polyhedra_test.cpp's job).
 #include <gtest/gtest.h>
@@ -70,8 +71,17 @@ std::vector<std::uint64_t> probe_seeds() {
   return out;
 }
 
+test::PolyhedronOptions probe_family() {
+  const char* env = std::getenv("PQMESH_PROBE_FAMILY");
+  const std::string name = env != nullptr ? env : "bounded";
+  if (name == "suite") return test::suite_polyhedron_options();
+  if (name == "every_run") return test::every_run_polyhedron_options();
+  if (name != "bounded") ADD_FAILURE() << "PQMESH_PROBE_FAMILY: unknown family " << name << ", using bounded";
+  return test::bounded_feature_polyhedron_options();
+}
+
 void probe(std::uint64_t seed, int show) {
-  const Domain3 d = make_domain(test::random_polyhedron(seed, test::bounded_feature_polyhedron_options()));
+  const Domain3 d = make_domain(test::random_polyhedron(seed, probe_family()));
   mv3d::OctreeOptions oo;
   oo.separate = true;
   oo.generic_grid = true;

@@ -22,39 +22,23 @@
 #include <cstdint>
 
 #include "aspect_alpha_property.hpp"
-#include "mesh3d/box_plan.hpp"
-#include "mv3d/octree_builder.hpp"
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quality.hpp"
 #include "support/random_domains.hpp"
 #include "tet3d/facet_boxes.hpp"
+#include "warped_box_mesh.hpp"
 
 namespace pqmesh {
 namespace {
-
-// tet_mesh's pipeline up to the warped boxes: the generic-grid octree with
-// the separating splits, plan_all_kinds, mesh_boxes with warping.
-tet3d::BoxMesh warped_box_mesh(const Domain3& d) {
-  mv3d::OctreeOptions oo;
-  oo.separate = true;
-  oo.generic_grid = true;
-  mv3d::OctreeBuilder builder(d, oo);
-  builder.build();
-  const mesh3d::BoxPlan plan = mesh3d::plan_all_kinds(builder);
-  const tet3d::CornerSet corners(builder);
-  tet3d::BoxMeshOptions bo;
-  bo.warp = true;
-  return tet3d::mesh_boxes(builder.tree(), corners, d, plan.jobs, bo);
-}
 
 class WorstEdgeBox : public ::testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(WorstEdgeBox, ColumnIsWarpedAndTheBoundHolds) {
   const std::uint64_t seed = GetParam();
   const Domain3 d = make_domain(test::random_polyhedron(seed, test::bounded_feature_polyhedron_options()));
-  const tet3d::BoxMesh m = warped_box_mesh(d);
+  const tet3d::BoxMesh m = test::warped_box_mesh(d);
   const CheckReport report = check_mesh(m.mesh, d);
   ASSERT_TRUE(report.valid()) << "seed " << seed << ": " << report.to_text();
   EXPECT_EQ(m.warp_inverting_left, 0) << "seed " << seed << ": warps frozen by the rebuild loop";
@@ -80,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(BoundedSeeds, WorstEdgeBox, ::testing::Values(76u, 125u
 // Cost: about 1 s cpu in Release (156k tetrahedra, the check included).
 TEST(WorstEdgeBoxSuite, FaceNearlyAlongEIsTranslatedPartly) {
   const Domain3 d = make_domain(test::random_polyhedron(135, test::suite_polyhedron_options()));
-  const tet3d::BoxMesh m = warped_box_mesh(d);
+  const tet3d::BoxMesh m = test::warped_box_mesh(d);
   const CheckReport report = check_mesh(m.mesh, d);
   ASSERT_TRUE(report.valid()) << report.to_text();
   EXPECT_EQ(m.warp_inverting_left, 0) << "warps frozen by the rebuild loop";
@@ -102,7 +86,7 @@ TEST(WorstEdgeBoxSuite, FaceNearlyAlongEIsTranslatedPartly) {
 // The bound asserted, 1,000, sits between the two.
 TEST(WorstEdgeBoxEveryRun, FaceMovedAlongItsNormalKeepsCaseC1) {
   const Domain3 d = make_domain(test::random_polyhedron(36, test::every_run_polyhedron_options()));
-  const tet3d::BoxMesh m = warped_box_mesh(d);
+  const tet3d::BoxMesh m = test::warped_box_mesh(d);
   const CheckReport report = check_mesh(m.mesh, d);
   ASSERT_TRUE(report.valid()) << report.to_text();
   const double alpha = compute_alpha(d.plc).radians;
