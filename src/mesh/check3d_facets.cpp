@@ -60,7 +60,7 @@ class FacetGrid {
   std::array<int, 3> cell(Vec3 p) const {
     std::array<int, 3> out{};
     for (int a = 0; a < 3; ++a) {
-      const double t = std::floor((coord(p, a) - coord(lo_, a)) * scale_[a]);
+      const double t = std::floor((axis_coord(p, a) - axis_coord(lo_, a)) * scale_[a]);
       out[a] = t <= 0 ? 0 : (t >= n_[a] - 1 ? n_[a] - 1 : static_cast<int>(t));
     }
     return out;
@@ -120,7 +120,7 @@ void Checker3::prepare_facets(const Domain3& d) {
     std::size_t k_min = 0;
     for (std::size_t k = 1; k < outer.size(); ++k) {
       const Vec3 p = pv[outer[k]], q = pv[outer[k_min]];
-      if (coord(p, u) < coord(q, u) || (coord(p, u) == coord(q, u) && coord(p, w) < coord(q, w))) k_min = k;
+      if (axis_coord(p, u) < axis_coord(q, u) || (axis_coord(p, u) == axis_coord(q, u) && axis_coord(p, w) < axis_coord(q, w))) k_min = k;
     }
     const std::size_t n = outer.size();
     fp.turn = orient2d_projected(pv[outer[(k_min + n - 1) % n]], pv[outer[k_min]], pv[outer[(k_min + 1) % n]],
@@ -158,7 +158,7 @@ bool Checker3::in_closed_facet(const Domain3& d, int f, Vec3 p) const {
       const Vec3 a = pv[loop[k]], b = pv[loop[(k + 1) % n]];
       if (within_ulp_of_segment(p, a, b)) return true;  // on the loop (ALGORITHM.md §5)
       const Sign o = orient2d_projected(a, b, p, fp.axis);
-      const bool a_above = coord(a, w) > coord(p, w), b_above = coord(b, w) > coord(p, w);
+      const bool a_above = axis_coord(a, w) > axis_coord(p, w), b_above = axis_coord(b, w) > axis_coord(p, w);
       if (a_above != b_above && ((b_above && o == Sign::Positive) || (a_above && o == Sign::Negative)))
         inside = !inside;
     }

@@ -45,7 +45,7 @@ inline bool within_ulp_of_plane_at_extremes(Vec3 p, Vec3 a, Vec3 b, Vec3 c, cons
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     if (normal[static_cast<std::size_t>(i)] != Sign::Zero && normal[static_cast<std::size_t>(j)] == Sign::Zero &&
         normal[static_cast<std::size_t>(k)] == Sign::Zero) {
-      const double ai = i == 0 ? a.x : (i == 1 ? a.y : a.z);
+      const double ai = axis_coord(a, i);
       return lo[i] <= ai && ai <= hi[i];
     }
   }

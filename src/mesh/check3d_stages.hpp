@@ -27,7 +27,6 @@
 
 namespace pqmesh::detail::check3d {
 
-inline double coord(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 
 // Exact: a, b, c on one line (all three coordinate projections degenerate).
 inline bool collinear(Vec3 a, Vec3 b, Vec3 c) {

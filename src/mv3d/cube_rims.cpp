@@ -16,7 +16,6 @@ namespace pqmesh::mv3d {
 
 namespace {
 
-double coord(Vec3 p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
 Vec3 make_point(int axis, double w, double u, double v) {
   std::array<double, 3> c{};
@@ -68,10 +67,10 @@ Sampling sample_rect(const Domain3& dom, const std::vector<int>& tris, const Rec
     std::array<int, 3> s{};
     for (std::size_t i = 0; i < 3; ++i) {
       p[i] = dom.plc.vertices[static_cast<std::size_t>(tri[i])];
-      const double h = coord(p[i], a);
+      const double h = axis_coord(p[i], a);
       s[i] = h > r.w ? 1 : (h < r.w ? -1 : 0);
     }
-    const auto p2 = [&](std::size_t i) { return P2{mpq_class(coord(p[i], ua)), mpq_class(coord(p[i], va))}; };
+    const auto p2 = [&](std::size_t i) { return P2{mpq_class(axis_coord(p[i], ua)), mpq_class(axis_coord(p[i], va))}; };
     if (s[0] == 0 && s[1] == 0 && s[2] == 0) {
       const std::array<P2, 3> q{p2(0), p2(1), p2(2)};
       for (std::size_t i = 0; i < 3; ++i) segs.push_back({q[i], q[(i + 1) % 3]});
@@ -84,7 +83,7 @@ Sampling sample_rect(const Domain3& dom, const std::vector<int>& tris, const Rec
       if (s[i] == 0) pts.push_back(p2(i));
       if (s[i] * s[j] < 0) {
         // p_i + f (p_j - p_i) with f = (w - h_i) / (h_j - h_i), exact.
-        const mpq_class hi(coord(p[i], a)), hj(coord(p[j], a));
+        const mpq_class hi(axis_coord(p[i], a)), hj(axis_coord(p[j], a));
         const mpq_class f = (mpq_class(r.w) - hi) / (hj - hi);
         const P2 pi = p2(i), pj = p2(j);
         pts.push_back({pi.u + f * (pj.u - pi.u), pi.v + f * (pj.v - pi.v)});
@@ -203,8 +202,8 @@ CubeRims cube_rims(const Domain3& domain, const Cube& cube) {
   for (int axis = 0; axis < 3; ++axis)
     for (int side = 0; side < 2; ++side) {
       const int ua = (axis + 1) % 3, va = (axis + 2) % 3;
-      const Rect r{axis, side == 0 ? coord(cube.lo, axis) : coord(cube.hi, axis), coord(cube.lo, ua), coord(cube.hi, ua),
-                   coord(cube.lo, va), coord(cube.hi, va)};
+      const Rect r{axis, side == 0 ? axis_coord(cube.lo, axis) : axis_coord(cube.hi, axis), axis_coord(cube.lo, ua), axis_coord(cube.hi, ua),
+                   axis_coord(cube.lo, va), axis_coord(cube.hi, va)};
       const Sampling s = sample_rect(domain, tris, r);
       all.points.insert(all.points.end(), s.points.begin(), s.points.end());
       all.in_plane.insert(all.in_plane.end(), s.in_plane.begin(), s.in_plane.end());
@@ -233,17 +232,17 @@ DuplicateAdjacency adjacent_duplicates(const Domain3& domain, const Cube& big, c
   DuplicateAdjacency out;
   for (int a = 0; a < 3 && out.axis < 0; ++a) {
     const int ua = (a + 1) % 3, va = (a + 2) % 3;
-    const bool inside = coord(big.lo, ua) <= coord(small.lo, ua) && coord(small.hi, ua) <= coord(big.hi, ua) &&
-                        coord(big.lo, va) <= coord(small.lo, va) && coord(small.hi, va) <= coord(big.hi, va);
+    const bool inside = axis_coord(big.lo, ua) <= axis_coord(small.lo, ua) && axis_coord(small.hi, ua) <= axis_coord(big.hi, ua) &&
+                        axis_coord(big.lo, va) <= axis_coord(small.lo, va) && axis_coord(small.hi, va) <= axis_coord(big.hi, va);
     if (!inside) continue;
-    if (coord(small.lo, a) == coord(big.hi, a)) out.value = coord(small.lo, a);
-    else if (coord(small.hi, a) == coord(big.lo, a)) out.value = coord(small.hi, a);
+    if (axis_coord(small.lo, a) == axis_coord(big.hi, a)) out.value = axis_coord(small.lo, a);
+    else if (axis_coord(small.hi, a) == axis_coord(big.lo, a)) out.value = axis_coord(small.hi, a);
     else continue;
     out.axis = a;
   }
   if (out.axis < 0) throw std::invalid_argument("adjacent_duplicates: small's face must lie in a face of big");
   const int a = out.axis, ua = (a + 1) % 3, va = (a + 2) % 3;
-  const Rect r{a, out.value, coord(small.lo, ua), coord(small.hi, ua), coord(small.lo, va), coord(small.hi, va)};
+  const Rect r{a, out.value, axis_coord(small.lo, ua), axis_coord(small.hi, ua), axis_coord(small.lo, va), axis_coord(small.hi, va)};
   // Every triangle with a trace crossing the open rectangle meets both closed cubes.
   const std::vector<int> tris =
       small_hint ? triangles_meeting(domain, small, std::vector<int>(small_hint->candidates.begin(), small_hint->candidates.end()))

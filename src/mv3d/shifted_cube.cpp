@@ -22,7 +22,7 @@ Pert plane(const Cube& c, int axis, int side) {
 // In C_e  <=>  in the closed box C (the shift is outward).
 bool vertex_inside(Vec3 p, const Cube& c) {
   for (int k = 0; k < 3; ++k)
-    if (at(p, k) < lo_of(c, k) || at(p, k) > hi_of(c, k)) return false;
+    if (axis_coord(p, k) < lo_of(c, k) || axis_coord(p, k) > hi_of(c, k)) return false;
   return true;
 }
 
@@ -72,7 +72,7 @@ Pert crossing(const Line& l, Vec3 a, Vec3 b, Vec3 c) {
   const Pert& f2 = l.f2.value();
   // Coefficient by coefficient (no Pert temporaries).
   Pert pos;
-  pos.c[0] = (f1.c[0] - q(at(a, o1))) * m1 + (f2.c[0] - q(at(a, o2))) * m2 + q(at(a, l.d));
+  pos.c[0] = (f1.c[0] - q(axis_coord(a, o1))) * m1 + (f2.c[0] - q(axis_coord(a, o2))) * m2 + q(axis_coord(a, l.d));
   for (std::size_t k = 1; k < pos.c.size(); ++k) {
     if (sgn(f1.c[k]) != 0) pos.c[k] += f1.c[k] * m1;
     if (sgn(f2.c[k]) != 0) pos.c[k] += f2.c[k] * m2;
@@ -122,8 +122,8 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
   const int o1 = (l.d + 1) % 3, o2 = (l.d + 2) % 3;
   // Filter: a fixed coordinate whose constant part lies strictly outside the
   // triangle's range misses it whatever the infinitesimals.
-  const double mn1 = std::min({at(a, o1), at(b, o1), at(c, o1)}), mx1 = std::max({at(a, o1), at(b, o1), at(c, o1)});
-  const double mn2 = std::min({at(a, o2), at(b, o2), at(c, o2)}), mx2 = std::max({at(a, o2), at(b, o2), at(c, o2)});
+  const double mn1 = std::min({axis_coord(a, o1), axis_coord(b, o1), axis_coord(c, o1)}), mx1 = std::max({axis_coord(a, o1), axis_coord(b, o1), axis_coord(c, o1)});
+  const double mn2 = std::min({axis_coord(a, o2), axis_coord(b, o2), axis_coord(c, o2)}), mx2 = std::max({axis_coord(a, o2), axis_coord(b, o2), axis_coord(c, o2)});
   if (l.hi[0] < mn1 || l.lo[0] > mx1 || l.hi[1] < mn2 || l.lo[1] > mx2) return false;  // brackets: exact
   // Brackets straddling a bound (non-double constant parts): decide exactly.
   if ((l.lo[0] < mn1 && cmp(l.f1.value().c[0], mn1) < 0) || (l.hi[0] > mx1 && cmp(l.f1.value().c[0], mx1) > 0) ||
@@ -139,7 +139,7 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
     // Exact filter: orient2d(u, v, .) is affine, so if it has one non-zero
     // sign at the four corners of the box bracketing P's constant part, that
     // is its sign at P whatever the infinitesimals.
-    const Vec2 u2{at(u, o1), at(u, o2)}, v2{at(v, o1), at(v, o2)};
+    const Vec2 u2{axis_coord(u, o1), axis_coord(u, o2)}, v2{axis_coord(v, o1), axis_coord(v, o2)};
     int corner_sign = static_cast<int>(orient2d(u2, v2, {l.lo[0], l.lo[1]}));
     if (corner_sign != 0) {
       for (const Vec2 p : {Vec2{l.hi[0], l.lo[1]}, Vec2{l.lo[0], l.hi[1]}, Vec2{l.hi[0], l.hi[1]}})
@@ -156,8 +156,8 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
     // its sign is that of the first non-zero coefficient.
     const Pert& f1 = l.f1.value();
     const Pert& f2 = l.f2.value();
-    const mpq_class b1 = q(at(v, o1)) - q(at(u, o1)), b2 = q(at(v, o2)) - q(at(u, o2));
-    int sg = sgn((f2.c[0] - q(at(u, o2))) * b1 - (f1.c[0] - q(at(u, o1))) * b2);
+    const mpq_class b1 = q(axis_coord(v, o1)) - q(axis_coord(u, o1)), b2 = q(axis_coord(v, o2)) - q(axis_coord(u, o2));
+    int sg = sgn((f2.c[0] - q(axis_coord(u, o2))) * b1 - (f1.c[0] - q(axis_coord(u, o1))) * b2);
     for (std::size_t k = 1; k < f1.c.size() && sg == 0; ++k) {
       if (sgn(f1.c[k]) == 0 && sgn(f2.c[k]) == 0) continue;
       sg = sgn(f2.c[k] * b1 - f1.c[k] * b2);
@@ -201,10 +201,10 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
   const double nd_d = n[l.d];
   pos.lo = -HUGE_VAL;
   pos.hi = HUGE_VAL;
-  if (at(a, l.d) == at(b, l.d) && at(a, l.d) == at(c, l.d)) {  // the plane x_d = a_d: p0 = a_d exactly
-    pos.lo = pos.hi = at(a, l.d);
+  if (axis_coord(a, l.d) == axis_coord(b, l.d) && axis_coord(a, l.d) == axis_coord(c, l.d)) {  // the plane x_d = a_d: p0 = a_d exactly
+    pos.lo = pos.hi = axis_coord(a, l.d);
   } else if (nd_d != 0) {
-    const double est = at(a, l.d) - (n[o1] * (f1 - at(a, o1)) + n[o2] * (f2 - at(a, o2))) / nd_d;
+    const double est = axis_coord(a, l.d) - (n[o1] * (f1 - axis_coord(a, o1)) + n[o2] * (f2 - axis_coord(a, o2))) / nd_d;
     double scale = std::fabs(est) + std::fabs(f1) + std::fabs(f2);
     for (const Vec3 p : {a, b, c}) scale += std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z);
     const double delta = std::max(1e-9 * scale, 1e-300);
@@ -222,12 +222,12 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
   // Straddle, exactly on doubles: u_axis > hi_axis + e  <=>  u_axis > hi_axis, and
   // u_axis < lo_axis - e  <=>  u_axis < lo_axis.
   const auto beyond = [&](Vec3 p) {
-    return side == 1 ? at(p, axis) > hi_of(c, axis) : at(p, axis) < lo_of(c, axis);
+    return side == 1 ? axis_coord(p, axis) > hi_of(c, axis) : axis_coord(p, axis) < lo_of(c, axis);
   };
   if (beyond(u) == beyond(v)) return false;
   for (int j = 0; j < 3; ++j) {
     if (j == axis) continue;
-    if ((at(u, j) < lo_of(c, j) && at(v, j) < lo_of(c, j)) || (at(u, j) > hi_of(c, j) && at(v, j) > hi_of(c, j)))
+    if ((axis_coord(u, j) < lo_of(c, j) && axis_coord(v, j) < lo_of(c, j)) || (axis_coord(u, j) > hi_of(c, j) && axis_coord(v, j) > hi_of(c, j)))
       return false;
   }
   // Exact filter on the constant part x0 of the crossing's coordinate j:
@@ -235,11 +235,11 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
   // face plane A; a non-zero sign decides x against L -+ e^(j+1).
   {
     const double plane_a = side == 1 ? hi_of(c, axis) : lo_of(c, axis);
-    const int sa = at(v, axis) > at(u, axis) ? 1 : -1;  // the straddle makes them differ
+    const int sa = axis_coord(v, axis) > axis_coord(u, axis) ? 1 : -1;  // the straddle makes them differ
     bool decided = true;
     for (int j = 0; j < 3; ++j) {
       if (j == axis) continue;
-      const Vec2 u2{at(u, axis), at(u, j)}, v2{at(v, axis), at(v, j)};
+      const Vec2 u2{axis_coord(u, axis), axis_coord(u, j)}, v2{axis_coord(v, axis), axis_coord(v, j)};
       const int sl = -static_cast<int>(orient2d(u2, v2, {plane_a, lo_of(c, j)})) * sa;
       const int sh = -static_cast<int>(orient2d(u2, v2, {plane_a, hi_of(c, j)})) * sa;
       if (sl < 0 || sh > 0) return false;
@@ -249,16 +249,16 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
       if (w) {
         // The crossing u + t (v - u) at x_axis = A -+ e^(axis+1): coordinate j
         // is u_j + (A - u_a) r -+ r e^(axis+1), r = (v_j - u_j) / (v_a - u_a).
-        const mpq_class den = q(at(v, axis)) - q(at(u, axis)), off = q(plane_a) - q(at(u, axis));
+        const mpq_class den = q(axis_coord(v, axis)) - q(axis_coord(u, axis)), off = q(plane_a) - q(axis_coord(u, axis));
         for (int j = 0; j < 3; ++j) {
           Pert& x = (*w)[static_cast<std::size_t>(j)];
           if (j == axis) {
             x = plane(c, axis, side);
             continue;
           }
-          const mpq_class r = (q(at(v, j)) - q(at(u, j))) / den;
+          const mpq_class r = (q(axis_coord(v, j)) - q(axis_coord(u, j))) / den;
           for (mpq_class& y : x.c) y = 0;  // reuses the caller's storage (no Pert temporary)
-          x.c[0] = q(at(u, j)) + off * r;
+          x.c[0] = q(axis_coord(u, j)) + off * r;
           x.c[static_cast<std::size_t>(detail::kE1 + axis)] = side == 1 ? mpq_class(r) : mpq_class(-r);
         }
       }
@@ -267,15 +267,15 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
   }
   const Pert a = plane(c, axis, side);
   std::array<Pert, 3> p;
-  const Pert off = a - Pert::constant(at(u, axis));
-  const mpq_class den = q(at(v, axis)) - q(at(u, axis));
+  const Pert off = a - Pert::constant(axis_coord(u, axis));
+  const mpq_class den = q(axis_coord(v, axis)) - q(axis_coord(u, axis));
   for (int j = 0; j < 3; ++j) {
     if (j == axis) {
       p[static_cast<std::size_t>(j)] = a;
       continue;
     }
-    Pert x = off * ((q(at(v, j)) - q(at(u, j))) / den);
-    x.c[0] += q(at(u, j));
+    Pert x = off * ((q(axis_coord(v, j)) - q(axis_coord(u, j))) / den);
+    x.c[0] += q(axis_coord(u, j));
     const int sl = detail::compare(x, plane(c, j, 0)), sh = detail::compare(x, plane(c, j, 1));
     if (sl == 0 || sh == 0) throw InternalError("mv3d: a segment passes through an edge of the shifted cube");
     if (sl < 0 || sh > 0) return false;
@@ -312,8 +312,8 @@ bool triangle_meets(const Domain3& dom, int t, const Cube& c, const std::array<L
   const Vec3 b = dom.plc.vertices[static_cast<std::size_t>(tri[1])];
   const Vec3 p = dom.plc.vertices[static_cast<std::size_t>(tri[2])];
   for (int k = 0; k < 3; ++k) {
-    if (std::max({at(a, k), at(b, k), at(p, k)}) < lo_of(c, k)) return false;
-    if (std::min({at(a, k), at(b, k), at(p, k)}) > hi_of(c, k)) return false;
+    if (std::max({axis_coord(a, k), axis_coord(b, k), axis_coord(p, k)}) < lo_of(c, k)) return false;
+    if (std::min({axis_coord(a, k), axis_coord(b, k), axis_coord(p, k)}) > hi_of(c, k)) return false;
   }
   if (vertex_inside(a, c) || vertex_inside(b, c) || vertex_inside(p, c)) return true;
   const std::array<Vec3, 3> v{a, b, p};

@@ -17,9 +17,8 @@
 
 namespace pqmesh::mv3d::detail {
 
-inline double at(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
-inline double lo_of(const Cube& c, int axis) { return at(c.lo, axis); }
-inline double hi_of(const Cube& c, int axis) { return at(c.hi, axis); }
+inline double lo_of(const Cube& c, int axis) { return axis_coord(c.lo, axis); }
+inline double hi_of(const Cube& c, int axis) { return axis_coord(c.hi, axis); }
 
 // The shifted plane of C_e: axis k at lo_k - e^(k+1) (side 0) or hi_k + e^(k+1) (side 1).
 Pert plane(const Cube& c, int axis, int side);

@@ -230,7 +230,7 @@ struct LocalFeatureSize3::Impl {
 
   explicit Impl(const Domain3& d);
   int index(double v, int axis) const {
-    const double t = std::floor((v - detail::lfs_axis(lo, axis)) / w);
+    const double t = std::floor((v - axis_coord(lo, axis)) / w);
     return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(n[detail::lfs_uz(axis)] - 1)));
   }
   int flat(int i, int j, int k) const { return (k * n[1] + j) * n[0] + i; }
@@ -261,8 +261,8 @@ LocalFeatureSize3::Impl::Impl(const Domain3& d) : model(d) {
     for (int ax = 0; ax < 3; ++ax) {
       double mn = detail::kLfsInf, mx = -detail::kLfsInf;
       for (int v : tr) {
-        mn = std::min(mn, detail::lfs_axis(model.points[lfs_uz(v)], ax));
-        mx = std::max(mx, detail::lfs_axis(model.points[lfs_uz(v)], ax));
+        mn = std::min(mn, axis_coord(model.points[lfs_uz(v)], ax));
+        mx = std::max(mx, axis_coord(model.points[lfs_uz(v)], ax));
       }
       i0[lfs_uz(ax)] = index(mn - margin, ax);
       i1[lfs_uz(ax)] = index(mx + margin, ax);
@@ -356,7 +356,7 @@ double LocalFeatureSize3::Impl::at(Vec3 x) const {
     double L = detail::kLfsInf;
     const std::array<int, 3> a0{i0, j0, k0}, a1{i1, j1, k1};
     for (int ax = 0; ax < 3; ++ax) {
-      const double xa = detail::lfs_axis(x, ax), la = detail::lfs_axis(lo, ax);
+      const double xa = axis_coord(x, ax), la = axis_coord(lo, ax);
       if (a0[lfs_uz(ax)] > 0) L = std::min(L, std::max(0.0, xa - (la + a0[lfs_uz(ax)] * w)));
       if (a1[lfs_uz(ax)] < n[lfs_uz(ax)] - 1) L = std::min(L, std::max(0.0, (la + (a1[lfs_uz(ax)] + 1) * w) - xa));
     }

@@ -19,7 +19,6 @@ inline constexpr double kLfsInf = std::numeric_limits<double>::infinity();
 inline std::size_t lfs_uz(int i) { return static_cast<std::size_t>(i); }
 
 
-inline double lfs_axis(Vec3 v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 
 // Squared distance from x to the point p (a construction).
 inline double lfs_dist2_point(Vec3 x, Vec3 p) {

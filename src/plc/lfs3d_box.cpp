@@ -24,7 +24,7 @@ namespace {
 
 // 2D coordinates of v in the plane that drops `drop`, in the cyclic order of
 // orient2d_projected.
-Vec2 project(Vec3 v, int drop) { return {lfs_axis(v, (drop + 1) % 3), lfs_axis(v, (drop + 2) % 3)}; }
+Vec2 project(Vec3 v, int drop) { return {axis_coord(v, (drop + 1) % 3), axis_coord(v, (drop + 2) % 3)}; }
 
 
 // p lies on the closed 2D segment uv, given orient2d(u, v, p) == 0.
@@ -126,9 +126,9 @@ bool triangle_meets_box_sat(Vec3 a, Vec3 b, Vec3 c, Vec3 lo, Vec3 hi, bool open_
   const std::array<Vec3, 3> t{a, b, c};
   // Box faces.
   for (int ax = 0; ax < 3; ++ax) {
-    const double mn = std::min({lfs_axis(a, ax), lfs_axis(b, ax), lfs_axis(c, ax)});
-    const double mx = std::max({lfs_axis(a, ax), lfs_axis(b, ax), lfs_axis(c, ax)});
-    const double l = lfs_axis(lo, ax), h = lfs_axis(hi, ax);
+    const double mn = std::min({axis_coord(a, ax), axis_coord(b, ax), axis_coord(c, ax)});
+    const double mx = std::max({axis_coord(a, ax), axis_coord(b, ax), axis_coord(c, ax)});
+    const double l = axis_coord(lo, ax), h = axis_coord(hi, ax);
     if (open_box ? (mx <= l || mn >= h) : (mx < l || mn > h)) return false;
   }
   std::array<Vec3, 8> corner;
@@ -158,7 +158,7 @@ bool triangle_meets_box_sat(Vec3 a, Vec3 b, Vec3 c, Vec3 lo, Vec3 hi, bool open_
         Vec3 v = lo;
         const int u = (drop + 1) % 3, w = (drop + 2) % 3;
         auto set = [&](int axis, bool high) {
-          const double val = lfs_axis(high ? hi : lo, axis);
+          const double val = axis_coord(high ? hi : lo, axis);
           if (axis == 0) v.x = val;
           else if (axis == 1) v.y = val;
           else v.z = val;
@@ -197,7 +197,7 @@ BoundaryBuckets3::BoundaryBuckets3(const Domain3& d) : domain_(d) {
     const auto& tr = d.facet_triangles[t];
     std::array<int, 3> i0{}, i1{};
     for (int ax = 0; ax < 3; ++ax) {
-      const double v0 = lfs_axis(P[lfs_uz(tr[0])], ax), v1 = lfs_axis(P[lfs_uz(tr[1])], ax), v2 = lfs_axis(P[lfs_uz(tr[2])], ax);
+      const double v0 = axis_coord(P[lfs_uz(tr[0])], ax), v1 = axis_coord(P[lfs_uz(tr[1])], ax), v2 = axis_coord(P[lfs_uz(tr[2])], ax);
       i0[lfs_uz(ax)] = gi(std::min({v0, v1, v2}) - margin_, ax);
       i1[lfs_uz(ax)] = gi(std::max({v0, v1, v2}) + margin_, ax);
     }
@@ -209,7 +209,7 @@ BoundaryBuckets3::BoundaryBuckets3(const Domain3& d) : domain_(d) {
 }
 
 int BoundaryBuckets3::gi(double v, int axis) const {
-  const double t = std::floor((v - lfs_axis(glo_, axis)) / gw_);
+  const double t = std::floor((v - axis_coord(glo_, axis)) / gw_);
   return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(gn_ - 1)));
 }
 
@@ -218,8 +218,8 @@ bool BoundaryBuckets3::box_meets_boundary(Vec3 lo, Vec3 hi, bool open_box) {
   const auto& P = domain_.plc.vertices;
   std::array<int, 3> i0{}, i1{};
   for (int ax = 0; ax < 3; ++ax) {
-    i0[lfs_uz(ax)] = gi(lfs_axis(lo, ax) - margin_, ax);
-    i1[lfs_uz(ax)] = gi(lfs_axis(hi, ax) + margin_, ax);
+    i0[lfs_uz(ax)] = gi(axis_coord(lo, ax) - margin_, ax);
+    i1[lfs_uz(ax)] = gi(axis_coord(hi, ax) + margin_, ax);
   }
   for (int k = i0[2]; k <= i1[2]; ++k)
     for (int j = i0[1]; j <= i1[1]; ++j)

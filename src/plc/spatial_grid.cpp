@@ -36,7 +36,7 @@ bool may_touch(Vec3 a, Vec3 b, Vec3 c, Vec3 center, Vec3 half) {
 }  // namespace
 
 int TriangleGrid::cell_index(double v, int axis) const {
-  const double lo = axis == 0 ? bounds_.lo.x : (axis == 1 ? bounds_.lo.y : bounds_.lo.z);
+  const double lo = axis_coord(bounds_.lo, axis);
   const double c = (v - lo) * scale_[axis];
   if (!(c > 0)) return 0;
   if (c >= n_[axis] - 1) return n_[axis] - 1;

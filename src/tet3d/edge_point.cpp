@@ -8,21 +8,15 @@
 
 namespace pqmesh::tet3d {
 
-namespace {
-
-double& coord(Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-
-}  // namespace
-
 std::pair<double, double> clip_segment(Vec3 a, Vec3 b, Vec3 lo, Vec3 hi) {
   double t0 = 0, t1 = 1;
   for (int k = 0; k < 3; ++k) {
-    const double p = coord(a, k), d = coord(b, k) - p;
+    const double p = axis_coord(a, k), d = axis_coord(b, k) - p;
     if (d == 0) {
-      if (p < coord(lo, k) || p > coord(hi, k)) return {1, 0};
+      if (p < axis_coord(lo, k) || p > axis_coord(hi, k)) return {1, 0};
       continue;
     }
-    double s0 = (coord(lo, k) - p) / d, s1 = (coord(hi, k) - p) / d;
+    double s0 = (axis_coord(lo, k) - p) / d, s1 = (axis_coord(hi, k) - p) / d;
     if (s0 > s1) std::swap(s0, s1);
     t0 = std::max(t0, s0);
     t1 = std::min(t1, s1);
@@ -33,19 +27,19 @@ std::pair<double, double> clip_segment(Vec3 a, Vec3 b, Vec3 lo, Vec3 hi) {
 Vec3 round_onto_segment(Vec3 a, Vec3 b, Vec3 m) {
   int d = 0;
   for (int k = 1; k < 3; ++k)
-    if (std::fabs(coord(b, k) - coord(a, k)) > std::fabs(coord(b, d) - coord(a, d))) d = k;
+    if (std::fabs(axis_coord(b, k) - axis_coord(a, k)) > std::fabs(axis_coord(b, d) - axis_coord(a, d))) d = k;
   Vec3 p = m;
-  const double dlo = std::min(coord(a, d), coord(b, d)), dhi = std::max(coord(a, d), coord(b, d));
-  coord(p, d) = std::clamp(coord(m, d), dlo, dhi);
-  const double x = coord(p, d);
-  const Sign dir = compare(coord(b, d), coord(a, d));
+  const double dlo = std::min(axis_coord(a, d), axis_coord(b, d)), dhi = std::max(axis_coord(a, d), axis_coord(b, d));
+  axis_ref(p, d) = std::clamp(axis_coord(m, d), dlo, dhi);
+  const double x = axis_coord(p, d);
+  const Sign dir = compare(axis_coord(b, d), axis_coord(a, d));
   for (int w = 0; w < 3; ++w) {
     if (w == d) continue;
     // sign(w* - y) for the segment's coordinate w* at x on axis d: the
     // segment's projection onto the (d, w) plane passes below / above (x, y).
-    const Vec2 pa{coord(a, d), coord(a, w)}, pb{coord(b, d), coord(b, w)};
+    const Vec2 pa{axis_coord(a, d), axis_coord(a, w)}, pb{axis_coord(b, d), axis_coord(b, w)};
     auto rel = [&](double y) { return orient2d(pa, pb, {x, y}) * dir * Sign::Negative; };
-    double lo = std::min(coord(a, w), coord(b, w)), hi = std::max(coord(a, w), coord(b, w));
+    double lo = std::min(axis_coord(a, w), axis_coord(b, w)), hi = std::max(axis_coord(a, w), axis_coord(b, w));
     double best = lo;
     if (lo == hi) {
       best = lo;
@@ -63,7 +57,7 @@ Vec3 round_onto_segment(Vec3 a, Vec3 b, Vec3 m) {
       }
       best = lo;
     }
-    coord(p, w) = best;
+    axis_ref(p, w) = best;
   }
   if (!within_ulp_of_segment(p, a, b)) throw InternalError("tet3d: a point does not round onto a P edge");
   return p;

@@ -24,7 +24,7 @@ bool facets_on_cube_boundary_only(const mv3d::OctreeBuilder& builder, std::int32
       bool below = true, above = true;
       for (const int v : tri) {
         const Vec3& p = dom.plc.vertices[static_cast<std::size_t>(v)];
-        const double x = a == 0 ? p.x : (a == 1 ? p.y : p.z);
+        const double x = axis_coord(p, a);
         below = below && x <= lo[a];
         above = above && x >= hi[a];
       }

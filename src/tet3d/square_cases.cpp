@@ -351,8 +351,7 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
   if (reflex) return any1 || any2;
   if (both) return true;
   if (!any1 || !any2) return false;
-  auto coord = [](Vec3 p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); };
-  const double vn = coord(pv, g.n), an = coord(far[0], g.n);
+  const double vn = axis_coord(pv, g.n), an = axis_coord(far[0], g.n);
   // c = v_n: line(e1) meets S's plane at v only (were it in that plane, σ
   // would lie on it and G_1's sign could not change), so x1 = v, in the sector.
   if (compare(g.c, vn) == Sign::Zero) return true;

@@ -8,7 +8,6 @@ namespace pqmesh::tet3d {
 
 namespace {
 
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
 
 // A point of S's plane: an input point lying on it, or the crossing of the
 // segment xy (x, y strictly on opposite sides) with it.
@@ -19,9 +18,9 @@ struct PlanePoint {
 
 // sign(w - w0) for the point's coordinate w on in-plane axis `axis`.
 Sign cmp(const SquareGeometry& g, const PlanePoint& p, int axis, double w0) {
-  if (!p.crossing) return compare(coord(p.x, axis), w0);
-  const Vec2 a{coord(p.x, g.n), coord(p.x, axis)}, b{coord(p.y, g.n), coord(p.y, axis)};
-  return -(orient2d(a, b, {g.c, w0}) * compare(coord(p.y, g.n), coord(p.x, g.n)));
+  if (!p.crossing) return compare(axis_coord(p.x, axis), w0);
+  const Vec2 a{axis_coord(p.x, g.n), axis_coord(p.x, axis)}, b{axis_coord(p.y, g.n), axis_coord(p.y, axis)};
+  return -(orient2d(a, b, {g.c, w0}) * compare(axis_coord(p.y, g.n), axis_coord(p.x, g.n)));
 }
 
 bool point_in(const SquareGeometry& g, const PlanePoint& p) {
@@ -36,7 +35,7 @@ bool overlaps(const SquareGeometry& g, const PlanePoint& p, const PlanePoint& q,
   return true;
 }
 
-Vec2 in_plane(const SquareGeometry& g, Vec3 p) { return {coord(p, g.u), coord(p, g.v)}; }
+Vec2 in_plane(const SquareGeometry& g, Vec3 p) { return {axis_coord(p, g.u), axis_coord(p, g.v)}; }
 
 }  // namespace
 
@@ -49,11 +48,11 @@ SquareGeometry square_geometry(const FaceSquare& s, const OctTree& tree) {
   hi.f[s.u] += s.side;
   hi.f[s.v] += s.side;
   const Vec3 lo = grid_coordinates(tree, s.lo), up = grid_coordinates(tree, hi);
-  g.c = coord(lo, s.n);
-  g.u0 = coord(lo, s.u);
-  g.u1 = coord(up, s.u);
-  g.v0 = coord(lo, s.v);
-  g.v1 = coord(up, s.v);
+  g.c = axis_coord(lo, s.n);
+  g.u0 = axis_coord(lo, s.u);
+  g.u1 = axis_coord(up, s.u);
+  g.v0 = axis_coord(lo, s.v);
+  g.v1 = axis_coord(up, s.v);
   for (int k = 0; k < 4; ++k) {
     double p[3];
     p[s.n] = g.c;
@@ -65,11 +64,11 @@ SquareGeometry square_geometry(const FaceSquare& s, const OctTree& tree) {
 }
 
 bool square_contains(const SquareGeometry& g, Vec3 p) {
-  return coord(p, g.n) == g.c && point_in(g, {p, p, false});
+  return axis_coord(p, g.n) == g.c && point_in(g, {p, p, false});
 }
 
 bool segment_meets_square(const SquareGeometry& g, Vec3 a, Vec3 b) {
-  const Sign sa = compare(coord(a, g.n), g.c), sb = compare(coord(b, g.n), g.c);
+  const Sign sa = compare(axis_coord(a, g.n), g.c), sb = compare(axis_coord(b, g.n), g.c);
   if (sa == sb && sa != Sign::Zero) return false;
   if (sa == Sign::Zero && sb == Sign::Zero)
     return segment_meets_rect(in_plane(g, a), in_plane(g, b), {g.u0, g.v0}, {g.u1, g.v1});
@@ -83,7 +82,7 @@ bool triangle_meets_square(const SquareGeometry& g, Vec3 a, Vec3 b, Vec3 c) {
   std::array<Sign, 3> s{};
   int pos = 0, neg = 0;
   for (std::size_t i = 0; i < 3; ++i) {
-    s[i] = compare(coord(t[i], g.n), g.c);
+    s[i] = compare(axis_coord(t[i], g.n), g.c);
     pos += s[i] == Sign::Positive;
     neg += s[i] == Sign::Negative;
   }

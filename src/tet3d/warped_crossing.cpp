@@ -7,7 +7,6 @@
 namespace pqmesh::tet3d {
 
 namespace {
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
 }  // namespace
 
 std::optional<Vec3> warped_square_crossing(Vec3 a, Vec3 b, const FaceSquare& s, const OctTree& tree,
@@ -36,7 +35,7 @@ std::optional<Vec3> warped_square_crossing(Vec3 a, Vec3 b, const FaceSquare& s, 
   const Vec3 x = a + t * (b - a);
   const Vec3 lo = grid_coordinates(tree, g[0]), hi = grid_coordinates(tree, g[2]);
   for (const int w : {s.u, s.v})
-    if (!(coord(x, w) > coord(lo, w) && coord(x, w) < coord(hi, w))) return std::nullopt;
+    if (!(axis_coord(x, w) > axis_coord(lo, w) && axis_coord(x, w) < axis_coord(hi, w))) return std::nullopt;
   return round_onto_segment(a, b, x);
 }
 

@@ -58,7 +58,6 @@
 namespace pqmesh::mv3d {
 namespace {
 
-double at(Vec3 p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
 int find(std::vector<int>& p, int x) {
   while (p[static_cast<std::size_t>(x)] != x) x = p[static_cast<std::size_t>(x)] = p[static_cast<std::size_t>(p[static_cast<std::size_t>(x)])];
@@ -91,7 +90,7 @@ int seg_tri(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
 bool segment_meets_box(Vec3 u, Vec3 v, const Cube& c) {
   mpq_class t0 = 0, t1 = 1;
   for (int k = 0; k < 3; ++k) {
-    const mpq_class a = at(u, k), b = at(v, k), lo = at(c.lo, k), hi = at(c.hi, k);
+    const mpq_class a = axis_coord(u, k), b = axis_coord(v, k), lo = axis_coord(c.lo, k), hi = axis_coord(c.hi, k);
     const mpq_class d = b - a;
     if (d == 0) {
       if (a < lo || a > hi) return false;
@@ -116,7 +115,7 @@ struct Oracle {
 Oracle run_oracle(const Domain3& d, const Cube& c, int n, const std::vector<int>& near, bool via_vertices) {
   const auto centre = [&](int i, int j, int k) {
     const auto co = [&](int axis, int idx) {
-      const double lo = at(c.lo, axis), hi = at(c.hi, axis);
+      const double lo = axis_coord(c.lo, axis), hi = axis_coord(c.hi, axis);
       return lo + (hi - lo) * (idx + 0.5) / n;
     };
     return Vec3{co(0, i), co(1, j), co(2, k)};
@@ -135,8 +134,8 @@ Oracle run_oracle(const Domain3& d, const Cube& c, int n, const std::vector<int>
                  cc = d.plc.vertices[static_cast<std::size_t>(tri[2])];
       bool skip = false;
       for (int ax = 0; ax < 3 && !skip; ++ax) {
-        const double mn = std::min({at(a, ax), at(b, ax), at(cc, ax)}), mx = std::max({at(a, ax), at(b, ax), at(cc, ax)});
-        skip = std::max(at(p, ax), at(q, ax)) < mn || std::min(at(p, ax), at(q, ax)) > mx;
+        const double mn = std::min({axis_coord(a, ax), axis_coord(b, ax), axis_coord(cc, ax)}), mx = std::max({axis_coord(a, ax), axis_coord(b, ax), axis_coord(cc, ax)});
+        skip = std::max(axis_coord(p, ax), axis_coord(q, ax)) < mn || std::min(axis_coord(p, ax), axis_coord(q, ax)) > mx;
       }
       if (skip) continue;
       const int r = seg_tri(p, q, a, b, cc);
@@ -303,8 +302,8 @@ Verdict judge(const Domain3& d, const CubeComponents& r, const Oracle& o, int& f
       for (int ax = 0; ax < 3 && !off; ++ax) {
         bool below = true, above = true;
         for (const int v : d.facet_triangles[static_cast<std::size_t>(t)]) {
-          below = below && at(d.plc.vertices[static_cast<std::size_t>(v)], ax) <= at(r.cube.lo, ax);
-          above = above && at(d.plc.vertices[static_cast<std::size_t>(v)], ax) >= at(r.cube.hi, ax);
+          below = below && axis_coord(d.plc.vertices[static_cast<std::size_t>(v)], ax) <= axis_coord(r.cube.lo, ax);
+          above = above && axis_coord(d.plc.vertices[static_cast<std::size_t>(v)], ax) >= axis_coord(r.cube.hi, ax);
         }
         off = below || above;
       }
@@ -328,7 +327,7 @@ bool faces_ok(const Domain3& d, const CubeComponents& r, std::string& why) {
   for (std::size_t v = 0; v < d.plc.vertices.size(); ++v) {
     const Vec3 p = d.plc.vertices[v];
     bool in = true;
-    for (int k = 0; k < 3; ++k) in = in && at(p, k) >= at(r.cube.lo, k) && at(p, k) <= at(r.cube.hi, k);
+    for (int k = 0; k < 3; ++k) in = in && axis_coord(p, k) >= axis_coord(r.cube.lo, k) && axis_coord(p, k) <= axis_coord(r.cube.hi, k);
     if (in) want_v.push_back(static_cast<int>(v));
   }
   for (std::size_t e = 0; e < d.edges.size(); ++e)
@@ -410,10 +409,10 @@ void check_domain(const Domain3& d, const std::string& name, std::uint64_t seed,
       for (int ax = 0; ax < 3 && !skip; ++ax) {
         double mn = 1e300, mx = -1e300;
         for (const int v : d.facet_triangles[t]) {
-          mn = std::min(mn, at(d.plc.vertices[static_cast<std::size_t>(v)], ax));
-          mx = std::max(mx, at(d.plc.vertices[static_cast<std::size_t>(v)], ax));
+          mn = std::min(mn, axis_coord(d.plc.vertices[static_cast<std::size_t>(v)], ax));
+          mx = std::max(mx, axis_coord(d.plc.vertices[static_cast<std::size_t>(v)], ax));
         }
-        skip = mx < at(c.lo, ax) || mn > at(c.hi, ax);
+        skip = mx < axis_coord(c.lo, ax) || mn > axis_coord(c.hi, ax);
       }
       if (!skip) near.push_back(static_cast<int>(t));
     }
