@@ -13,7 +13,9 @@
 // Run:  test_mesh3d --gtest_also_run_disabled_tests --gtest_filter='*WorstBoxProbe*'
 // Env:  PQMESH_PROBE_SEEDS="58,76,122,125" (default), PQMESH_PROBE_SHOW=3
 //       (tetrahedra printed per seed), PQMESH_PROBE_FAMILY=bounded (default),
-//       suite or every_run (the random family the seeds index).
+//       suite or every_run (the random family the seeds index);
+//       PQMESH_PROBE_FILE=data/3d/schoenhardt.poly probes that input file
+//       instead of the seeds (its "seed" is printed as 0).
 // The mesh is checked (check_mesh) like every mesh a test makes; the probe
 // asserts nothing about quality (that is random_polyhedra_test.cpp's job).
 #include <gtest/gtest.h>
@@ -34,6 +36,7 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quality.hpp"
+#include "pqmesh/read_domain.hpp"
 #include "support/random_domains.hpp"
 #include "tet3d/facet_boxes.hpp"
 
@@ -80,8 +83,13 @@ test::PolyhedronOptions probe_family() {
   return test::bounded_feature_polyhedron_options();
 }
 
+Domain3 probe_domain(std::uint64_t seed) {
+  const char* file = std::getenv("PQMESH_PROBE_FILE");
+  return make_domain(file != nullptr ? read_plc(file) : test::random_polyhedron(seed, probe_family()));
+}
+
 void probe(std::uint64_t seed, int show) {
-  const Domain3 d = make_domain(test::random_polyhedron(seed, probe_family()));
+  const Domain3 d = probe_domain(seed);
   mv3d::OctreeOptions oo;
   oo.separate = true;
   oo.generic_grid = true;
@@ -143,7 +151,9 @@ void probe(std::uint64_t seed, int show) {
 TEST(WorstBoxProbe, DISABLED_BoundedSeeds) {
   const char* show_env = std::getenv("PQMESH_PROBE_SHOW");
   const int show = show_env != nullptr ? std::atoi(show_env) : 3;
-  for (const std::uint64_t seed : probe_seeds()) probe(seed, show);
+  if (std::getenv("PQMESH_PROBE_FILE") != nullptr) probe(0, show);
+  else
+    for (const std::uint64_t seed : probe_seeds()) probe(seed, show);
 }
 
 }  // namespace
