@@ -307,12 +307,16 @@ class Assembler {
     if (!ec.convex())
       throw InternalError("tet3d: two-facet box " + std::to_string(leaf) + " at reflex edge " + std::to_string(edge) +
                           " with its centre outside the kernel (not done)");
-    // The apex's facet: the one whose plane is nearer the box centre.
+    // The apex's facet: the one whose plane is nearer the box centre, or the
+    // other when it makes the better valid box (two_facet_apex_facet).
+    const Chords* ch[2] = {&chord0, &chord1};
     const int near = std::fabs(pl[0]->distance(C)) <= std::fabs(pl[1]->distance(C)) ? 0 : 1;
-    const FacetPlane& f = *pl[near];
-    const FacetPlane& g = *pl[1 - near];
-    const auto& chord_f = near == 0 ? chord0 : chord1;
-    const auto& chord_g = near == 0 ? chord1 : chord0;
+    const int apex = two_facet_apex_facet(tris, pl, ch, near);
+    out_.stats.two_facet_apex_farther += apex != near ? 1 : 0;
+    const FacetPlane& f = *pl[apex];
+    const FacetPlane& g = *pl[1 - apex];
+    const Chords& chord_f = *ch[apex];
+    const Chords& chord_g = *ch[1 - apex];
     const int v = polygon_centre(chord_f, f, VertexKind::TwoFacetApex, centre);
     for (const Tri& t : tris)
       if (!(on_facet(t[0], f) && on_facet(t[1], f) && on_facet(t[2], f))) cone(leaf, t, v);
@@ -394,11 +398,69 @@ class Assembler {
     return (1.0 / static_cast<double>(poly.size())) * mean;
   }
 
-  // The vertex mean rounded onto F, keyed (kind, box centre, F).
+  // The vertex mean rounded onto F.
+  Vec3 polygon_point(const Chords& chord, const FacetPlane& plane) const {
+    return plane.settle(vertex_mean(chord), dominant_axis(plane.normal()));
+  }
+
+  // polygon_point, keyed (kind, box centre, F).
   int polygon_centre(const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre) {
-    const Vec3 mean = vertex_mean(chord);
     const VertexKey gk{kind, centre, {}, plane.facet()};
-    return book_.id(gk, [&] { return plane.settle(mean, dominant_axis(plane.normal())); });
+    return book_.id(gk, [&] { return polygon_point(chord, plane); });
+  }
+
+  // The worst tet_shape of the cones from `apex` over the face triangles
+  // (those with all three vertices on `skip` left out, when given); +infinity
+  // if one of them is not positive by exact orient3d.
+  double worst_cone(const std::vector<Tri>& tris, Vec3 apex, const FacetPlane* skip = nullptr) const {
+    double w = 0;
+    for (const Tri& t : tris) {
+      if (skip != nullptr && on_facet(t[0], *skip) && on_facet(t[1], *skip) && on_facet(t[2], *skip)) continue;
+      const Vec3 x = book_.point(t[0]), y = book_.point(t[2]), z = book_.point(t[1]);
+      if (orient3d(x, y, z, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
+      w = std::max(w, tet_shape(x, y, z, apex));
+    }
+    return w;
+  }
+
+  // The worst tet_shape of the fan of F ∩ b (its chords) from g, coned to
+  // `apex` (the tetrahedra of fan); with `exact`, +infinity if one of them is
+  // not positive by exact orient3d.
+  double worst_fan(const Chords& chord, Vec3 g, Vec3 apex, bool exact) const {
+    double w = 0;
+    for (const auto& [edge, directed] : chord) {
+      const Vec3 a = book_.point(directed.first), b = book_.point(directed.second);
+      if (exact && orient3d(a, b, g, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
+      w = std::max(w, tet_shape(a, b, g, apex));
+    }
+    return w;
+  }
+
+  // The apex's facet of a two-facet box at a convex edge (our choice within
+  // §4.5.5, docs/ALGORITHM.md §12.5 Gap (1)): `near`, the facet whose plane
+  // is nearer the box centre, unless the other facet's apex makes the better
+  // box. Each candidate apex is its facet's polygon centre (vertex mean
+  // rounded onto the facet, as polygon_centre), coned to the face triangles
+  // not on that facet, with the other facet's polygon fanned from its vertex
+  // mean (as fan with no bar). The nearer plane's polygon can be a sliver
+  // lying almost in a box face (every-run seed 197: 0.002 h from face x = 1,
+  // whose warped corners then made its cones flat or inverted). The other
+  // facet is taken only if every one of its tetrahedra is positive by exact
+  // orient3d and its worst tet_shape is strictly better; the float shapes
+  // only choose between two valid constructions (an invalid `near` counts as
+  // +infinity, exactly decided), and when neither is valid `near` is kept and
+  // the rebuild loop (mesh_boxes) freezes the warp that caused it, as before.
+  int two_facet_apex_facet(const std::vector<Tri>& tris, const FacetPlane* const pl[2], const Chords* const ch[2],
+                           int near) const {
+    auto worst = [&](int i) {
+      const FacetPlane& f = *pl[i];
+      const FacetPlane& g = *pl[1 - i];
+      const Vec3 apex = polygon_point(*ch[i], f);
+      const double cones = worst_cone(tris, apex, &f);
+      return std::max(cones, worst_fan(*ch[1 - i], polygon_point(*ch[1 - i], g), apex, true));
+    };
+    const double near_shape = worst(near);
+    return worst(1 - near) < near_shape ? 1 - near : near;
   }
 
   // §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean
@@ -416,15 +478,7 @@ class Assembler {
     const int axis = dominant_axis(plane.normal());
     const Vec3 mean = vertex_mean(chord);
     const Vec3 apex = book_.point(v);
-    auto worst = [&](Vec3 g, bool exact) {
-      double w = 0;
-      for (const auto& [edge, directed] : chord) {
-        const Vec3 a = book_.point(directed.first), b = book_.point(directed.second);
-        if (exact && orient3d(a, b, g, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
-        w = std::max(w, tet_shape(a, b, g, apex));
-      }
-      return w;
-    };
+    auto worst = [&](Vec3 g, bool exact) { return worst_fan(chord, g, apex, exact); };
     Vec3 best = plane.settle(mean, axis);
     if (!(bar < std::numeric_limits<double>::infinity())) return best;
     double best_shape = worst(best, false);

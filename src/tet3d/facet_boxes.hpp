@@ -46,11 +46,14 @@
 //   otherwise, convex E: v is put on the facet whose plane is nearer the box
 //   centre, at the mean of the vertices of the polygon F ∩ b (a point of its
 //   relative interior, rounded onto F), and coned to the π-triangles and to
-//   the fan of the other facet's polygon. Deviation: the thesis projects the
-//   centroid onto F when within h/4 and otherwise keeps it (possibly outside
-//   P, with prisms); the projection may miss F ∩ b, the polygon mean cannot,
-//   and cones from a boundary point of a convex polytope always tile it, so
-//   no prism is needed;
+//   the fan of the other facet's polygon; the other facet's polygon mean is
+//   taken instead when every one of its tetrahedra is positive (exact
+//   orient3d) and their worst shape is strictly better (tet_shape; a thin
+//   polygon almost in a box face made flat cones). Deviation: the thesis
+//   projects the centroid onto F when within h/4 and otherwise keeps it
+//   (possibly outside P, with prisms); the projection may miss F ∩ b, the
+//   polygon mean cannot, and cones from a boundary point of a convex polytope
+//   always tile it, so no prism is needed;
 //   otherwise (reflex E, centre outside the kernel): InternalError (not done).
 #include <cstdint>
 #include <span>
@@ -81,6 +84,9 @@ struct FacetBoxStats {
   std::int64_t edge_apex_moved = 0;  // edge boxes whose apex is not E's midpoint (facet_boxes.cpp apex_on_edge)
   std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
   std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
+  // Two-facet boxes coned from the facet whose plane is farther from the
+  // centre (facet_boxes.cpp two_facet_apex_facet).
+  std::int64_t two_facet_apex_farther = 0;
   // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted
   // once per asking box (a shared square is counted from both sides).
   std::int64_t squares_nothing = 0, squares_a = 0, squares_c = 0, squares_bd = 0;
