@@ -1,4 +1,5 @@
-// The pqmesh executable's global operator new: every block of 4 MiB or more
+// The pqmesh executable's global operator new: every block of 4 MiB or more (1 MiB in
+// 2D meshing, large_page_new.hpp)
 // (the meshes' vertex and triangle arrays, the triangulation's triangles, the
 // checker's tables, the .vtu quality fields, ...) comes from 2 MiB-aligned
 // memory marked MADV_HUGEPAGE, as geometry/large_page_allocator.hpp does for
@@ -21,19 +22,25 @@
 #include <cstdlib>
 #include <new>
 
+#include "large_page_new.hpp"
+
 #if defined(__linux__) && defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)  // (__GLIBC__: headers above)
 #include <sys/mman.h>
 
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
-// The threshold of LargePageAllocator. Lower ones (1 or 3 MiB: the per-vertex
-// tables of 3.4 MB on the plate of docs/ALGORITHM.md §8.11) saved a few
-// thousand more faults but raised the peak by 18 MB.
-constexpr std::size_t kLarge = std::size_t{4} << 20;
+// Blocks of large_threshold bytes or more get huge pages. The default is the
+// threshold of LargePageAllocator. Lower ones (1 or 3 MiB: the per-vertex tables
+// of 3.4 MB on the plate of docs/ALGORITHM.md §8.11) raised the 2D peak by 18 MB
+// while the quadtree's nodes lived in the malloc heap (later arrays were served
+// from the freed tree's heap space); since the nodes are in slabs of their own
+// (tree/chunked_vector.hpp) the 2D mesher sets 1 MiB (cmd_mesh.cpp). Set once,
+// before the work starts.
+std::size_t large_threshold = std::size_t{4} << 20;
 
 void* try_allocate(std::size_t n) {
-  if (n < kLarge) return std::malloc(n == 0 ? 1 : n);
+  if (n < large_threshold) return std::malloc(n == 0 ? 1 : n);
   const std::size_t rounded = (n + kHugePage - 1) / kHugePage * kHugePage;
   void* p = std::aligned_alloc(kHugePage, rounded);
 #if defined(MADV_HUGEPAGE)
@@ -54,11 +61,17 @@ void* allocate(std::size_t n) {
 
 }  // namespace
 
+void pqmesh::cli::set_large_page_threshold(std::size_t bytes) { large_threshold = bytes; }
+
 void* operator new(std::size_t n) { return allocate(n); }
 void* operator new[](std::size_t n) { return allocate(n); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+#else
+
+void pqmesh::cli::set_large_page_threshold(std::size_t /*bytes*/) {}
 
 #endif

@@ -5,9 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
-#include <new>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -73,22 +71,6 @@ struct WideCorners {
     radix_sort(v, g.ybits + 1, [](Key k) { return k.j; }, scratch);
     radix_sort(v, g.xbits, [](Key k) { return k.i; }, scratch);
   }
-};
-
-// A zero-filled byte array from calloc, which hands out fresh (untouched,
-// zero) pages for large sizes: memory is committed only where written.
-class ZeroedBytes {
- public:
-  explicit ZeroedBytes(std::size_t n) : p_(static_cast<std::uint8_t*>(std::calloc(n, 1))) {
-    if (p_ == nullptr) throw std::bad_alloc();
-  }
-  ~ZeroedBytes() { std::free(p_); }
-  ZeroedBytes(const ZeroedBytes&) = delete;
-  ZeroedBytes& operator=(const ZeroedBytes&) = delete;
-  std::uint8_t& operator[](std::size_t i) const { return p_[i]; }
-
- private:
-  std::uint8_t* p_;
 };
 
 struct Tagged {
@@ -282,67 +264,97 @@ class PointGenerator {
   // 2^kMaxDirectBits points: one byte per grid point, (records << 1) | busy,
   // where records counts the (leaf, corner) pairs at the point (saturating at
   // 127, so 4 means exactly 4) and busy is the or of their busy flags, the
-  // same facts the sorted runs of corner_phase give. The grid is allocated
-  // zeroed but untouched (calloc: fresh pages), so only the rows that hold
-  // corners cost memory. The distinct corners are the non-zero bytes: the grid
-  // itself answers find_crossings' questions (grid_corners_around), and scanning
-  // the used rows in order places the corners in (x, y) order, as corner_phase
-  // does.
+  // same facts the sorted runs of corner_phase give. Only the grid lines that
+  // hold a leaf corner get a row or column of the table (row_slot_ and
+  // col_slot_ number them in increasing order, -1 for the others): a point on
+  // any other line is no corner. On the plate of docs/ALGORITHM.md §8.11 that
+  // is about 1,000 of 8,192 lines each way, a table of ~1 MB instead of 64 MiB
+  // of address space of which the used rows and the scans of find_crossings
+  // touched ~3,500 pages. The distinct corners are the non-zero bytes: the
+  // table itself answers find_crossings' questions (grid_corners_around), and
+  // scanning the rows and columns in increasing order places the corners in
+  // (x, y) order, as corner_phase does.
   static constexpr int kMaxDirectBits = 26;
   void direct_corner_phase() {
-    const int yb = grid_.ybits;
-    const std::size_t rows = std::size_t{1} << grid_.xbits, cols = std::size_t{1} << yb;
-    const ZeroedBytes cells(rows * cols);
-    std::vector<std::uint8_t> row_used(rows, 0);
+    const std::size_t rows = std::size_t{1} << grid_.xbits, cols = std::size_t{1} << grid_.ybits;
+    std::vector<std::int32_t> row_slot(rows, -1), col_slot(cols, -1);
+    const auto corner_lines = [&](std::int32_t n, std::uint64_t& i, std::uint64_t& j, std::uint64_t& w) {
+      const Square s = b_.square(n);
+      i = grid_.ix(s.lo.x);
+      j = grid_.iy(s.lo.y);
+      w = grid_.ix(s.lo.x + s.side) - i;
+    };
+    for (const std::int32_t n : leaves_) {
+      std::uint64_t i = 0, j = 0, w = 0;
+      corner_lines(n, i, j, w);
+      row_slot[i] = row_slot[i + w] = col_slot[j] = col_slot[j + w] = 0;
+    }
+    std::vector<std::uint64_t> used_cols;  // the grid column of each table column
+    std::size_t used_rows = 0;
+    for (std::int32_t& r : row_slot)
+      if (r == 0) r = static_cast<std::int32_t>(used_rows++);
+    for (std::size_t j = 0; j < cols; ++j)
+      if (col_slot[j] == 0) {
+        col_slot[j] = static_cast<std::int32_t>(used_cols.size());
+        used_cols.push_back(j);
+      }
+    const std::size_t width = used_cols.size();
+    std::vector<std::uint8_t> cells(used_rows * width, 0);
+    const auto cell = [&](std::uint64_t i, std::uint64_t j) -> std::uint8_t& {
+      return cells[static_cast<std::size_t>(row_slot[i]) * width + static_cast<std::size_t>(col_slot[j])];
+    };
     std::size_t distinct = 0;
     for (const std::int32_t n : leaves_) {
       const NodeData& nd = b_.data(n);
       const std::uint8_t busy = !nd.square_edges.empty() || nd.vertex_owner >= 0 ? 1 : 0;
-      const Square s = b_.square(n);
-      const std::uint64_t i = grid_.ix(s.lo.x), j = grid_.iy(s.lo.y), w = grid_.ix(s.lo.x + s.side) - i;
+      std::uint64_t i = 0, j = 0, w = 0;
+      corner_lines(n, i, j, w);
       for (int k = 0; k < 4; ++k) {
-        const std::uint64_t ci = i + static_cast<std::uint64_t>(k & 1) * w, cj = j + static_cast<std::uint64_t>(k >> 1) * w;
-        std::uint8_t& c = cells[(ci << yb) | cj];
-        if (c == 0) {
-          ++distinct;
-          row_used[ci] = 1;
-        }
+        std::uint8_t& c = cell(i + static_cast<std::uint64_t>(k & 1) * w, j + static_cast<std::uint64_t>(k >> 1) * w);
+        if (c == 0) ++distinct;
         c = static_cast<std::uint8_t>((c >> 1 < 127 ? c + 2 : c) | busy);
       }
     }
-    cells_ = &cells[0];
+    cells_ = cells.data();
+    row_slot_ = row_slot.data();
+    col_slot_ = col_slot.data();
+    width_ = width;
     find_crossings();
     cells_ = nullptr;
+    row_slot_ = col_slot_ = nullptr;
     memo_ = CrossingMemo{};
     plain_.reserve(distinct);
     std::vector<int> segs;
     for (std::size_t i = 0; i < rows; ++i) {
-      if (!row_used[i]) continue;
-      const std::uint8_t* row = &cells[i << yb];
-      for (std::size_t j = 0; j < cols; ++j) {
+      if (row_slot[i] < 0) continue;
+      const std::uint8_t* row = &cells[static_cast<std::size_t>(row_slot[i]) * width];
+      for (std::size_t t = 0; t < width; ++t) {
         // Most of a row is empty: skip eight empty bytes at once.
-        if (j % 8 == 0 && j + 8 <= cols) {
+        if (t % 8 == 0 && t + 8 <= width) {
           std::uint64_t word;
-          std::memcpy(&word, row + j, 8);
+          std::memcpy(&word, row + t, 8);
           if (word == 0) {
-            j += 7;
+            t += 7;
             continue;
           }
         }
-        const std::uint8_t c = row[j];
+        const std::uint8_t c = row[t];
         if (c == 0) continue;
         // Fast path of place_corners: a corner of four leaves, none busy.
         if (c == (4 << 1))
-          plain_.push_back(grid_.point(i, j));
+          plain_.push_back(grid_.point(i, used_cols[t]));
         else
-          place_corner(grid_.point(i, j), segs);
+          place_corner(grid_.point(i, used_cols[t]), segs);
       }
     }
     std::sort(snaps_.begin(), snaps_.end());
   }
 
   // The grid of direct_corner_phase: whether grid point (i, j) is a leaf corner.
-  bool is_corner(std::uint64_t i, std::uint64_t j) const { return cells_[(i << grid_.ybits) | j] != 0; }
+  bool is_corner(std::uint64_t i, std::uint64_t j) const {
+    const std::int32_t r = row_slot_[i], c = col_slot_[j];
+    return r >= 0 && c >= 0 && cells_[static_cast<std::size_t>(r) * width_ + static_cast<std::size_t>(c)] != 0;
+  }
 
   // The leaf corners on the box-side line {x = at} (vertical) or {y = at}
   // nearest to p on either side: c1 the last one with across(c1) <= across(p),
@@ -694,7 +706,11 @@ class PointGenerator {
   std::vector<std::int32_t> leaves_;
   CornerGrid grid_;
   std::vector<Vec2> by_x_, by_y_;  // corner_phase: distinct corners sorted by (x, y) and by (y, x)
-  const std::uint8_t* cells_ = nullptr;  // direct_corner_phase's grid while find_crossings runs
+  // direct_corner_phase's table while find_crossings runs (is_corner).
+  const std::uint8_t* cells_ = nullptr;
+  const std::int32_t* row_slot_ = nullptr;
+  const std::int32_t* col_slot_ = nullptr;
+  std::size_t width_ = 0;
   std::vector<Snap> snaps_;
   std::vector<Snap> forced_;        // (corner, segment): a crossing forces the corner onto the segment
   std::vector<Crossing> crossings_;

@@ -296,7 +296,11 @@ class Tree {
   std::array<double, kTreeMaxLevel + 1> half_side_{};
   std::int32_t leaf_count_ = 0;
   std::int32_t merged_count_ = 0;  // merge() calls so far
-  detail::ChunkedVector<Node> nodes_;
+  // The quadtree's nodes in huge-page slabs (chunked_vector.hpp): on the 2D plate
+  // of docs/ALGORITHM.md §8.11 (1.2 million nodes, 65 MB) they took ~15k 4 KiB
+  // page faults, and the slabs go back to the system with the tree. The octree
+  // keeps malloc chunks until slabs are measured on the 3D runs.
+  detail::ChunkedVector<Node, 13, D == 2> nodes_;
   detail::KeyIndex index_;
 };
 
