@@ -330,6 +330,9 @@ class Assembler {
   }
   void collect_bad() { collect_ = true; }
   const std::vector<GridPoint>& bad() const { return bad_; }
+  // Per bad() point: bit a set when it lies on a face of the inverted
+  // tetrahedron's box with normal axis a.
+  const std::vector<std::uint8_t>& bad_axes() const { return bad_axes_; }
   // The jobs of the inverted tetrahedra (collect mode), in order, repeats allowed.
   const std::vector<std::int32_t>& bad_jobs() const { return bad_jobs_; }
 
@@ -571,14 +574,28 @@ class Assembler {
     const std::size_t before = bad_.size();
     std::vector<FaceSquare> squares;
     job_squares(tree_, corners_, job_box_, squares);
+    // The job's box (a united vertex box spans 2x2x2 leaves): bad_axes_ gets
+    // bit a when g lies on one of its two faces along axis a (warp.cpp,
+    // `second_only`).
+    const BoxKey<3>& key = tree_.key(job_box_.leaf);
+    const bool united = job_box_.kind == BoxKind::Vertex;
+    const GridPoint lo = united ? united_lo(key, job_box_.block) : key_corner(key, 0);
+    const std::int64_t side = (united ? 2 : 1) * key.fine_side();
+    auto add = [&](const GridPoint& g) {
+      std::uint8_t axes = 0;
+      for (std::size_t a = 0; a < 3; ++a)
+        if (g.f[a] == lo.f[a] || g.f[a] == lo.f[a] + side) axes = static_cast<std::uint8_t>(axes | (1u << a));
+      bad_.push_back(g);
+      bad_axes_.push_back(axes);
+    };
     auto report_square = [&](const FaceSquare& sq) {
       for (const GridPoint& g : square_ring(sq, corners_))
-        if (warps_->moved(g)) bad_.push_back(g);
+        if (warps_->moved(g)) add(g);
     };
     for (const int v : vertices) {
       const VertexKey& k = book_.key(v);
       for (const GridPoint& g : {k.p, k.q})
-        if (warps_->moved(g)) bad_.push_back(g);
+        if (warps_->moved(g)) add(g);
       if (k.kind == VertexKind::Grid || k.kind == VertexKind::Warped || k.kind == VertexKind::PVertex ||
           k.kind == VertexKind::EdgeMidpoint)
         continue;
@@ -674,6 +691,7 @@ class Assembler {
   BoxJob job_box_;
   bool collect_ = false;
   std::vector<GridPoint> bad_;  // moved grid points of inverted tetrahedra (collect_ mode)
+  std::vector<std::uint8_t> bad_axes_;  // parallel to bad_ (bad_axes())
   std::vector<std::int32_t> bad_jobs_;
   PointBook book_;
   SquareDispatcher squares_{tree_, corners_, domain_, book_, warps_};
@@ -820,6 +838,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     // candidates (about half the peak memory of a run) are not kept through
     // the trial passes: a rebuild makes them again (same list).
     std::unordered_set<GridPoint, GridPointHash> frozen;
+    std::unordered_map<GridPoint, std::uint8_t, GridPointHash> second_only;
     std::vector<EdgeBoxBounds> edge_boxes;
     std::set<std::int32_t> shifted_jobs;
     for (int round = 0; round < 16; ++round) {
@@ -842,11 +861,18 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
         edge_boxes.push_back({key_corner(tree.key(j.leaf), 0), key_corner(tree.key(j.leaf), 7), j.apex});
         translated = true;
       }
-      if (!translated)
-        for (const GridPoint& g : trial->bad()) frozen.insert(g);
+      if (!translated) {
+        // A point reported for the first time keeps the part of its second
+        // pass within the inverted tetrahedra's box faces (warp.cpp,
+        // `second_only`); reported again, it is frozen.
+        std::unordered_map<GridPoint, std::uint8_t, GridPointHash> now;
+        for (std::size_t i = 0; i < trial->bad().size(); ++i) now[trial->bad()[i]] |= trial->bad_axes()[i];
+        for (const auto& [g, axes] : now)
+          if (!second_only.emplace(g, axes).second) frozen.insert(g);
+      }
       trial.reset();
       warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
-                                options.reflex_copies, edge_boxes);
+                                options.reflex_copies, edge_boxes, &second_only);
       release_free_heap();
     }
   }

@@ -81,7 +81,8 @@ double facet_distance(const Domain3& domain, int facet, Vec3 x) {
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies,
-                            std::span<const EdgeBoxBounds> edge_boxes) {
+                            std::span<const EdgeBoxBounds> edge_boxes,
+                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only) {
   WarpTable table;
   std::map<int, std::unique_ptr<FacetPlane>> planes;
   auto plane_of = [&](int f) -> const FacetPlane& {
@@ -463,6 +464,40 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     };
     int facet = -1, left = 0;
     bool bisect = false;
+    // A point whose move inverted a tetrahedron once (`second_only`, the
+    // rebuild loop in facet_boxes.cpp): the first-pass and face moves, which
+    // bend a box face past a cone apex near it (an apex on a P edge running
+    // nearly in that face), are dropped; the second pass alone from the
+    // prewarped point is kept without its components along the axes on
+    // which the point lies on a face of the inverted tetrahedron's box
+    // (`axes`, bit a for axis a), so that box's faces stay in their planes
+    // and its cones keep their heights, while the point still moves off its
+    // close facet within them (for a one-facet move, each component kept is
+    // the full move's, so the distance to the facet's plane does not drop;
+    // the side rules decide as for every move). A Case C1
+    // triangle 0.02 h wide on a face 0.004 h below an edge-box apex, spanned
+    // by such a point frozen with the face, was the every-run family's worst
+    // (seed 30, docs/ALGORITHM.md §12.5). A point without a first-pass part,
+    // with nothing left of its move, or whose move a rule refuses is left in
+    // place (frozen, as before); reported again, it is frozen.
+    if (second_only != nullptr) {
+      const auto it = second_only->find(c.p);
+      if (it != second_only->end()) {
+        Vec3 z = second_pass(x0, facet, bisect, left);
+        const std::uint8_t axes = first && left == 0 ? it->second : std::uint8_t{7};
+        if ((axes & 1) != 0) z.x = x0.x;
+        if ((axes & 2) != 0) z.y = x0.y;
+        if ((axes & 4) != 0) z.z = x0.z;
+        const bool same_point = z.x == x0.x && z.y == x0.y && z.z == x0.z;
+        if (same_point || (frozen != nullptr && frozen->count(c.p) != 0) || !accept(z)) {
+          ++table.frozen_left;
+          continue;
+        }
+        table.insert(c.p, Warp{facet, z});
+        table.bisected += bisect ? 1 : 0;
+        continue;
+      }
+    }
     const Vec3 y = second_pass(x, facet, bisect, left);
     table.crowded_left += left == 1;
     // Without copies (the behaviour before them): v keeps its first-pass

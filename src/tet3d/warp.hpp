@@ -108,10 +108,18 @@ struct EdgeBoxBounds {
 // translated (warp.cpp, "face translations"), each face by the largest
 // 2^-k (k = 0..4) of its move that keeps its points' side decisions and
 // clearances (warp.cpp, "adaptive length"); empty: none.
+// `second_only` (may be null): points whose move inverted a tetrahedron once
+// (facet_boxes.cpp, rebuild loop), each with the axes (bit a) on which it
+// lies on a face of that tetrahedron's box: such a point with a first-pass or
+// face move gets its second pass alone from the prewarped point, without the
+// components along those axes (a face bent by the first pass past an edge-box
+// apex no longer freezes the point's move off its facet); otherwise, or when
+// nothing is left or a rule refuses it, it stays (frozen_left).
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
-                            bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {});
+                            bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {},
+                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr);
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {
