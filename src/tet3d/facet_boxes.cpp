@@ -171,15 +171,7 @@ class Assembler {
                     double t1) {
     const Vec3 p0 = ends.size() == 2 ? book_.point(ends[0]) : a + t0 * (b - a);
     const Vec3 p1 = ends.size() == 2 ? book_.point(ends[1]) : a + t1 * (b - a);
-    auto worst = [&](Vec3 apex) {
-      double w = 0;
-      for (const Tri& t : tris) {
-        const Vec3 x = book_.point(t[0]), y = book_.point(t[2]), z = book_.point(t[1]);
-        if (orient3d(x, y, z, apex) != Sign::Positive) return std::numeric_limits<double>::infinity();
-        w = std::max(w, tet_shape(x, y, z, apex));
-      }
-      return w;
-    };
+    auto worst = [&](Vec3 apex) { return worst_cone(tris, apex); };
     Vec3 best = round_onto_segment(a, b, mid);
     double best_shape = worst(best);
     // A midpoint with a non-positive cone is kept: the warp that caused it
