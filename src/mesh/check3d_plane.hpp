@@ -35,9 +35,8 @@ inline std::array<Sign, 3> plane_normal_signs(Vec3 a, Vec3 b, Vec3 c) {
 
 // Equals within_ulp_of_plane(p, a, b, c) when normal == plane_normal_signs(a, b, c).
 inline bool within_ulp_of_plane_at_extremes(Vec3 p, Vec3 a, Vec3 b, Vec3 c, const std::array<Sign, 3>& normal) {
-  const double inf = std::numeric_limits<double>::infinity();
-  const double lo[3] = {std::nextafter(p.x, -inf), std::nextafter(p.y, -inf), std::nextafter(p.z, -inf)};
-  const double hi[3] = {std::nextafter(p.x, inf), std::nextafter(p.y, inf), std::nextafter(p.z, inf)};
+  const double lo[3] = {next_down(p.x), next_down(p.y), next_down(p.z)};
+  const double hi[3] = {next_up(p.x), next_up(p.y), next_up(p.z)};
   // A plane normal to axis i (n_j = n_k = 0 exactly, so a, b, c share their
   // exact i coordinate): the box meets it iff lo_i <= a_i <= hi_i. No
   // orient3d at all (axis-aligned facets, the common case).

@@ -75,9 +75,8 @@ struct FacetPlane {
 // widened by an ulp. Exact. (A point on the plane lies inside its ulp box, so
 // the plane meets the box: no separate orient3d(p) == 0 test.)
 inline bool on_facet_plane(const FacetPlane& fp, Vec3 p) {
-  const double inf = std::numeric_limits<double>::infinity();
-  const Vec3 lo{std::nextafter(p.x, -inf), std::nextafter(p.y, -inf), std::nextafter(p.z, -inf)};
-  const Vec3 hi{std::nextafter(p.x, inf), std::nextafter(p.y, inf), std::nextafter(p.z, inf)};
+  const Vec3 lo{next_down(p.x), next_down(p.y), next_down(p.z)};
+  const Vec3 hi{next_up(p.x), next_up(p.y), next_up(p.z)};
   if (hi.x < fp.lo.x || lo.x > fp.hi.x || hi.y < fp.lo.y || lo.y > fp.hi.y || hi.z < fp.lo.z || lo.z > fp.hi.z)
     return false;
   return within_ulp_of_plane_at_extremes(p, fp.p0, fp.p1, fp.p2, fp.normal);

@@ -296,13 +296,16 @@ void Checker3::check_listed_faces() {
   std::vector<K> keys;
   for (std::size_t i = 0; i < faces_.boundary.size(); ++i) keys.push_back(key(faces_.boundary[i], -1 - static_cast<int>(i)));
   for (std::size_t i = 0; i < m_.faces.size(); ++i) keys.push_back(key(m_.faces[i], static_cast<int>(i)));
+  // Compared element by element (std::array's == and < call memcmp here).
+  const auto same = [](const K& a, const K& b) { return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2]; };
   std::sort(keys.begin(), keys.end(), [](const K& a, const K& b) {
-    if (a.v != b.v) return a.v < b.v;
+    for (int k = 0; k < 3; ++k)
+      if (a.v[k] != b.v[k]) return a.v[k] < b.v[k];
     return a.source < b.source;  // the boundary face (negative) first
   });
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i;
-    while (j < keys.size() && keys[j].v == keys[i].v) ++j;
+    while (j < keys.size() && same(keys[j], keys[i])) ++j;
     const bool is_boundary = keys[i].source < 0;
     const std::size_t first_listed = is_boundary ? i + 1 : i;
     if (is_boundary && first_listed == j) {

@@ -17,7 +17,9 @@
 // degenerate case does so by a symbolic perturbation documented at the call
 // site (docs/ALGORITHM.md lists them), never by a tolerance.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "pqmesh/vec.hpp"
@@ -181,6 +183,20 @@ inline Sign dot_sign(Vec3 a, Vec3 b, Vec3 c) { return dot_sign(a, b, a, c); }
 // Sign of a - b for two coordinates (trivially exact; named for clarity).
 constexpr Sign compare(double a, double b) { return a > b ? Sign::Positive : (a < b ? Sign::Negative : Sign::Zero); }
 
+// The neighbouring doubles of x: the same values as std::nextafter(x, +inf)
+// and std::nextafter(x, -inf) for every x (NaN stays NaN, +-0 steps to the
+// smallest subnormal of the step's sign, -denorm_min up gives -0, +-inf and
+// +-max step as nextafter does), from the bits instead of a library call: on
+// one sign the order of finite doubles is the order of their bit patterns.
+// The ulp box tests below call them for every point they examine.
+inline double next_up(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity()) return x;
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0 ? bits + 1 : bits - 1);
+}
+inline double next_down(double x) { return -next_up(-x); }
+
 // p is a faithful rounding of a point of the closed segment ab: the segment
 // meets the closed "ulp box" [pred(p.x), succ(p.x)] x [pred(p.y), succ(p.y)]
 // (pred/succ: the neighbouring doubles). A mesher that puts a Steiner point on
@@ -192,9 +208,7 @@ constexpr Sign compare(double a, double b) { return a > b ? Sign::Positive : (a 
 inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi);
 
 inline bool within_ulp_of_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const double inf = std::numeric_limits<double>::infinity();
-  return segment_meets_rect(a, b, {std::nextafter(p.x, -inf), std::nextafter(p.y, -inf)},
-                            {std::nextafter(p.x, inf), std::nextafter(p.y, inf)});
+  return segment_meets_rect(a, b, {next_down(p.x), next_down(p.y)}, {next_up(p.x), next_up(p.y)});
 }
 
 // The closed segment ab meets the closed rectangle [lo, hi] (lo <= hi). Exact:
@@ -223,12 +237,11 @@ inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
 // the axis separates iff the four distinct projected corners lie strictly on
 // one side of the projected line.
 inline bool within_ulp_of_segment(Vec3 p, Vec3 a, Vec3 b) {
-  const double inf = std::numeric_limits<double>::infinity();
   const double pc[3] = {p.x, p.y, p.z}, ac[3] = {a.x, a.y, a.z}, bc[3] = {b.x, b.y, b.z};
   double lo[3], hi[3];
   for (int i = 0; i < 3; ++i) {
-    lo[i] = std::nextafter(pc[i], -inf);
-    hi[i] = std::nextafter(pc[i], inf);
+    lo[i] = next_down(pc[i]);
+    hi[i] = next_up(pc[i]);
     if (hi[i] < std::min(ac[i], bc[i]) || lo[i] > std::max(ac[i], bc[i])) return false;
   }
   for (int drop = 0; drop < 3; ++drop) {
@@ -252,10 +265,9 @@ inline bool within_ulp_of_segment(Vec3 p, Vec3 a, Vec3 b) {
 // within_ulp_of_plane(p, a, b, c): the plane through a, b, c (not collinear)
 // meets p's ulp box: orient3d is not of one strict sign on its eight corners.
 inline bool within_ulp_of_plane(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  const double inf = std::numeric_limits<double>::infinity();
-  const double xs[2] = {std::nextafter(p.x, -inf), std::nextafter(p.x, inf)};
-  const double ys[2] = {std::nextafter(p.y, -inf), std::nextafter(p.y, inf)};
-  const double zs[2] = {std::nextafter(p.z, -inf), std::nextafter(p.z, inf)};
+  const double xs[2] = {next_down(p.x), next_up(p.x)};
+  const double ys[2] = {next_down(p.y), next_up(p.y)};
+  const double zs[2] = {next_down(p.z), next_up(p.z)};
   int pos = 0, neg = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Sign s = orient3d(a, b, c, {xs[corner & 1], ys[(corner >> 1) & 1], zs[(corner >> 2) & 1]});

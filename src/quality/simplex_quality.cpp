@@ -49,19 +49,49 @@ double tri_enclosing_radius(Vec2 a, Vec2 b, Vec2 c, double circum) {
   return circum;
 }
 
+// Which of N angles atan2(y_i, x_i) can be the smallest or the largest
+// computed value, judged by keys that order the angles: `separated(k_i, k_j)`
+// must prove that the EXACT angle i is below the exact angle j by a gap far
+// above the few-ulp error of atan2 and of the keys, so that the computed
+// angles are strictly ordered the same way. lo is the first smallest key, hi
+// the last largest (the next index when all keys are equal); both are always
+// needed. Any other angle whose key is separated from both (above lo's, below
+// hi's) lies strictly between two needed angles and is neither extreme, so
+// the min / max over the needed angles are the same doubles as over all N
+// (the quality fields evaluate this for every element of a mesh; atan2 is
+// their costliest call). A key that is NaN separates nothing: that angle is
+// needed (and a NaN first key makes every angle needed).
+template <int N>
+struct ExtremeCandidates {
+  int lo = 0, hi = 0;
+  std::array<bool, N> needed{};
+};
+
+template <int N, class Separated>
+ExtremeCandidates<N> extreme_candidates(const std::array<double, N>& key, Separated separated) {
+  ExtremeCandidates<N> c;
+  for (int i = 1; i < N; ++i) {
+    if (key[i] < key[c.lo]) c.lo = i;
+    if (key[i] >= key[c.hi]) c.hi = i;
+  }
+  if (c.lo == c.hi) c.hi = (c.lo + 1) % N;  // all keys equal (or a NaN first): none separated below
+  for (int i = 0; i < N; ++i)
+    c.needed[i] = i == c.lo || i == c.hi || !(separated(key[c.lo], key[i]) && separated(key[i], key[c.hi]));
+  return c;
+}
+
 // The smallest and largest of the three angles angle_between(b - a, c - a),
 // angle_between(c - b, a - b), angle_between(a - c, b - c), as the same
-// doubles std::min / std::max of all three would give, with fewer atan2 calls
-// (the quality fields evaluate this for every triangle of a mesh):
+// doubles std::min / std::max of all three would give, with fewer atan2 calls:
 //   * two angles whose atan2 arguments are the same doubles have the same
 //     value (a right isosceles half-square: its two 45 degree angles);
-//   * the angle opposite the middle edge is skipped when the three squared
-//     edge lengths (opposite_a = |bc|^2, ...) differ pairwise by a factor of
-//     at least 1 + 2^-20: the exact angles are then ordered as the edges
-//     (law of sines) with relative gaps far above the few-ulp error of the
-//     computed ones, so the middle value is neither the minimum nor the
-//     maximum. (A measurement, not a decision: should rounding ever reorder
-//     such angles, the reported extreme moves by that rounding only.)
+//   * keys: the three squared edge lengths (opposite_a = |bc|^2, ...); two of
+//     them differing by a factor of at least 1 + 2^-20 order the exact
+//     opposite angles (law of sines) with relative gaps far above the few-ulp
+//     error of the computed ones (extreme_candidates), so the angle opposite
+//     the middle edge is skipped when it is separated from both others.
+//     (A measurement, not a decision: should rounding ever reorder such
+//     angles, the reported extreme moves by that rounding only.)
 struct MinMax {
   double min, max;
 };
@@ -73,15 +103,10 @@ MinMax min_max_angle(Vec2 a, Vec2 b, Vec2 c, double opposite_a, double opposite_
     y[i] = std::abs(cross(u[i], w[i]));  // angle_between's atan2 arguments
     x[i] = dot(u[i], w[i]);
   }
-  const double len2[3] = {opposite_a, opposite_b, opposite_c};
-  int lo = 0, hi = 0;
-  for (int i = 1; i < 3; ++i) {
-    if (len2[i] < len2[lo]) lo = i;
-    if (len2[i] >= len2[hi]) hi = i;
-  }
-  if (lo == hi) hi = (lo + 1) % 3;  // all three equal: any two, the third is not skipped below
-  const int mid = 3 - lo - hi;
   constexpr double kGap = 1 + 0x1p-20;
+  const auto pick = extreme_candidates<3>({opposite_a, opposite_b, opposite_c},
+                                          [](double below, double above) { return below * kGap <= above; });
+  const int lo = pick.lo, hi = pick.hi, mid = 3 - lo - hi;
   double value[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
   const auto angle = [&](int i) {
@@ -95,7 +120,7 @@ MinMax min_max_angle(Vec2 a, Vec2 b, Vec2 c, double opposite_a, double opposite_
     return value[i] = std::atan2(y[i], x[i]);
   };
   const double v_lo = angle(lo), v_hi = angle(hi);
-  if (len2[lo] * kGap <= len2[mid] && len2[mid] * kGap <= len2[hi]) return {std::min(v_lo, v_hi), std::max(v_lo, v_hi)};
+  if (!pick.needed[mid]) return {std::min(v_lo, v_hi), std::max(v_lo, v_hi)};
   const double v_mid = angle(mid);
   return {std::min({v_lo, v_mid, v_hi}), std::max({v_lo, v_mid, v_hi})};
 }
@@ -245,13 +270,36 @@ TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
     return q;
   }
-  double min_dihedral = kInf, max_dihedral = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    for (int l = k + 1; l < 4; ++l) {
-      const double theta = std::numbers::pi - angle_between(n[k], n[l]);
-      min_dihedral = std::min(min_dihedral, theta);
-      max_dihedral = std::max(max_dihedral, theta);
+  // Dihedral angle i at the edge of faces k < l (pairs in loop order) is
+  // pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i). Keys for
+  // extreme_candidates: -x|x| / (x^2 + y^2) = -cos|cos| of the angle of the
+  // SAME doubles (y_i, x_i), increasing with it on [0, pi] and changing by at
+  // most the change of the angle (its derivative is |sin 2 phi| <= 1). Keys
+  // 2^-20 apart thus order the exact angles of those doubles with a gap of
+  // nearly 2^-20, far above the error of the keys (a few ulps of 1, as long as
+  // x^2 + y^2 is a finite normal number; otherwise the key is NaN and the
+  // angle computed) and of atan2 (an ulp of pi); pi - phi rounds monotonically.
+  // So the skipped dihedral angles lie between computed ones and the folds
+  // below give the same doubles as folding all six.
+  std::array<double, 6> ys{}, xs{}, key{};
+  for (int k = 0, i = 0; k < 4; ++k)
+    for (int l = k + 1; l < 4; ++l, ++i) {
+      ys[i] = norm(cross(n[k], n[l]));  // angle_between's atan2 arguments
+      xs[i] = dot(n[k], n[l]);
+      const double r2 = xs[i] * xs[i] + ys[i] * ys[i];
+      key[i] = std::isnormal(r2) ? -(xs[i] * std::abs(xs[i])) / r2 : std::numeric_limits<double>::quiet_NaN();
     }
+  constexpr double kCosGap = 0x1p-20;
+  const auto pick = extreme_candidates<6>(key, [](double below, double above) { return below + kCosGap <= above; });
+  double min_dihedral = kInf, max_dihedral = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    if (!pick.needed[i]) continue;
+    // atan2(y, +-0) is pi/2 rounded for every y > 0 (C Annex F): the right
+    // dihedral angles of the grid tetrahedra skip the call.
+    const double phi = xs[i] == 0 && ys[i] > 0 ? std::numbers::pi / 2 : std::atan2(ys[i], xs[i]);
+    const double theta = std::numbers::pi - phi;
+    min_dihedral = std::min(min_dihedral, theta);
+    max_dihedral = std::max(max_dihedral, theta);
   }
   q.min_dihedral_deg = min_dihedral * kDeg;
   q.max_dihedral_deg = max_dihedral * kDeg;
