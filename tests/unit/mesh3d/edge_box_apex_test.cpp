@@ -23,13 +23,8 @@
 // Cost: about 2-3 s cpu in Release (239k tetrahedra, the check included).
 #include <gtest/gtest.h>
 
-#include "aspect_alpha_property.hpp"
-#include "pqmesh/alpha.hpp"
-#include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/quality.hpp"
 #include "support/random_domains.hpp"
-#include "tet3d/facet_boxes.hpp"
 #include "warped_box_mesh.hpp"
 
 namespace pqmesh {
@@ -37,12 +32,7 @@ namespace {
 
 TEST(EdgeBoxApex, FrozenFacePointKeepsItsMoveWithinTheFace) {
   const Domain3 d = make_domain(test::random_polyhedron(30, test::every_run_polyhedron_options()));
-  const tet3d::BoxMesh m = test::warped_box_mesh(d);
-  const CheckReport report = check_mesh(m.mesh, d);
-  ASSERT_TRUE(report.valid()) << report.to_text();
-  const double alpha = compute_alpha(d.plc).radians;
-  const double aspect = quality_report(m.mesh).aspect_ratio.max;
-  EXPECT_LE(test::aspect_times_alpha(aspect, alpha), 2500.0) << "max aspect " << aspect << " at alpha " << alpha;
+  EXPECT_LE(test::valid_aspect_times_alpha(d, test::warped_box_mesh(d)), 2500.0);
 }
 
 }  // namespace

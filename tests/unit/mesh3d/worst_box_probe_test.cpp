@@ -39,6 +39,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "support/random_domains.hpp"
 #include "tet3d/facet_boxes.hpp"
+#include "warped_box_mesh.hpp"
 
 namespace pqmesh {
 namespace {
@@ -90,17 +91,10 @@ Domain3 probe_domain(std::uint64_t seed) {
 
 void probe(std::uint64_t seed, int show) {
   const Domain3 d = probe_domain(seed);
-  mv3d::OctreeOptions oo;
-  oo.separate = true;
-  oo.generic_grid = true;
-  mv3d::OctreeBuilder builder(d, oo);
-  builder.build();
-  const mesh3d::BoxPlan plan = mesh3d::plan_all_kinds(builder);
-  const tet3d::CornerSet corners(builder);
-  tet3d::BoxMeshOptions bo;
-  bo.warp = true;
-  const tet3d::BoxMesh m = tet3d::mesh_boxes(builder.tree(), corners, d, plan.jobs, bo);
-  const OctTree& tree = builder.tree();
+  const test::WarpedBoxRun run = test::warped_box_run(d);
+  const tet3d::BoxMesh& m = run.mesh;
+  const mesh3d::BoxPlan& plan = run.plan;
+  const OctTree& tree = run.builder->tree();
   std::printf("seed %llu: %zu tetrahedra; warped %lld, refused (conflicts) %lld, frozen (inverting) %lld in %lld "
               "rebuilds, shortened %lld, first pass %lld\n",
               static_cast<unsigned long long>(seed), m.mesh.tetrahedra.size(), static_cast<long long>(m.warped),

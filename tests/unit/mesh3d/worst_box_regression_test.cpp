@@ -21,13 +21,8 @@
 
 #include <cstdint>
 
-#include "aspect_alpha_property.hpp"
-#include "pqmesh/alpha.hpp"
-#include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/quality.hpp"
 #include "support/random_domains.hpp"
-#include "tet3d/facet_boxes.hpp"
 #include "warped_box_mesh.hpp"
 
 namespace pqmesh {
@@ -39,14 +34,9 @@ TEST_P(WorstEdgeBox, ColumnIsWarpedAndTheBoundHolds) {
   const std::uint64_t seed = GetParam();
   const Domain3 d = make_domain(test::random_polyhedron(seed, test::bounded_feature_polyhedron_options()));
   const tet3d::BoxMesh m = test::warped_box_mesh(d);
-  const CheckReport report = check_mesh(m.mesh, d);
-  ASSERT_TRUE(report.valid()) << "seed " << seed << ": " << report.to_text();
+  EXPECT_LE(test::valid_aspect_times_alpha(d, m), test::kAspectAlphaC) << "seed " << seed;
   EXPECT_EQ(m.warp_inverting_left, 0) << "seed " << seed << ": warps frozen by the rebuild loop";
   EXPECT_EQ(m.warp_rebuilds, 0) << "seed " << seed;
-  const double alpha = compute_alpha(d.plc).radians;
-  const double aspect = quality_report(m.mesh).aspect_ratio.max;
-  EXPECT_LE(test::aspect_times_alpha(aspect, alpha), test::kAspectAlphaC)
-      << "seed " << seed << ": max aspect " << aspect << " at alpha " << alpha << " rad";
 }
 
 INSTANTIATE_TEST_SUITE_P(BoundedSeeds, WorstEdgeBox, ::testing::Values(76u, 125u));
@@ -65,12 +55,8 @@ INSTANTIATE_TEST_SUITE_P(BoundedSeeds, WorstEdgeBox, ::testing::Values(76u, 125u
 TEST(WorstEdgeBoxSuite, FaceNearlyAlongEIsTranslatedPartly) {
   const Domain3 d = make_domain(test::random_polyhedron(135, test::suite_polyhedron_options()));
   const tet3d::BoxMesh m = test::warped_box_mesh(d);
-  const CheckReport report = check_mesh(m.mesh, d);
-  ASSERT_TRUE(report.valid()) << report.to_text();
+  EXPECT_LE(test::valid_aspect_times_alpha(d, m), 1713.2);
   EXPECT_EQ(m.warp_inverting_left, 0) << "warps frozen by the rebuild loop";
-  const double alpha = compute_alpha(d.plc).radians;
-  const double aspect = quality_report(m.mesh).aspect_ratio.max;
-  EXPECT_LE(test::aspect_times_alpha(aspect, alpha), 1713.2) << "max aspect " << aspect << " at alpha " << alpha;
 }
 
 // Every-run seed 36 (a 5-gon right prism with three notches, alpha 21.3 deg;
@@ -86,12 +72,7 @@ TEST(WorstEdgeBoxSuite, FaceNearlyAlongEIsTranslatedPartly) {
 // The bound asserted, 1,000, sits between the two.
 TEST(WorstEdgeBoxEveryRun, FaceMovedAlongItsNormalKeepsCaseC1) {
   const Domain3 d = make_domain(test::random_polyhedron(36, test::every_run_polyhedron_options()));
-  const tet3d::BoxMesh m = test::warped_box_mesh(d);
-  const CheckReport report = check_mesh(m.mesh, d);
-  ASSERT_TRUE(report.valid()) << report.to_text();
-  const double alpha = compute_alpha(d.plc).radians;
-  const double aspect = quality_report(m.mesh).aspect_ratio.max;
-  EXPECT_LE(test::aspect_times_alpha(aspect, alpha), 1000.0) << "max aspect " << aspect << " at alpha " << alpha;
+  EXPECT_LE(test::valid_aspect_times_alpha(d, test::warped_box_mesh(d)), 1000.0);
 }
 
 }  // namespace
