@@ -18,8 +18,6 @@ namespace pqmesh::detail {
 inline constexpr double kLfsInf = std::numeric_limits<double>::infinity();
 inline std::size_t lfs_uz(int i) { return static_cast<std::size_t>(i); }
 
-
-
 // Squared distance from x to the point p (a construction).
 inline double lfs_dist2_point(Vec3 x, Vec3 p) {
   const Vec3 d = x - p;
