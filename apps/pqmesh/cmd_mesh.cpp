@@ -190,7 +190,14 @@ int run_mesh(const std::vector<std::string>& argv) {
     const Args any(argv, kMeshFlagsAnyMode, kMeshOptionsAnyMode);
     any.expect_positional(1, 1);
     if (any.flag("--no-boundary-steiner")) return run_mesh_no_steiner(argv);
-    if (domain_dimension(any.positional()[0]) == 3) return run_mesh3(argv);
+    if (domain_dimension(any.positional()[0]) == 3) {
+      // 3D: the heap of small blocks (octree node data, GMP limbs, the box
+      // jobs' lists) grows in huge pages. On data/3d/plate_holes.poly: 36.7k
+      // page faults become 8.5k, 0.2-0.3 s less system time, 3 MB more peak
+      // (2D: its faults are already few, and its peak rose by 8 MB).
+      grow_heap_in_huge_pages();
+      return run_mesh3(argv);
+    }
   }
   // 2D: every block from the mmap threshold up gets huge pages. The quadtree's
   // nodes are in huge-page slabs that go back to the system with the tree

@@ -18,6 +18,10 @@
 // to the system when freed. Other platforms, and sanitizer builds (whose
 // runtimes check new/delete pairing through their own operator new): the
 // default operator new.
+//
+// The 3D mesher also has the heap of small blocks grow in huge pages
+// (grow_heap_in_huge_pages): its octree data, GMP limbs and box lists come to
+// most of its page faults came from blocks under the threshold.
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -25,7 +29,11 @@
 #include "large_page_new.hpp"
 
 #if defined(__linux__) && defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)  // (__GLIBC__: headers above)
+#include <malloc.h>
 #include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstdint>
 
 namespace {
 
@@ -39,8 +47,34 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 // before the work starts.
 std::size_t large_threshold = std::size_t{4} << 20;
 
+// The heap (grow_heap_in_huge_pages): malloc extends it by at least
+// kHeapStep at a time, and heap_marked_to is the break up to which it is marked
+// MADV_HUGEPAGE (0: off). The kernel backs a 2 MiB page of a marked range by a
+// huge page if nothing in it was touched before the marking; growth is seen at
+// the next operator new, after malloc wrote the block that caused it, so each
+// step loses a page or two of its 16. Blocks GMP allocates between two calls of
+// operator new only delay the marking.
+constexpr std::size_t kHeapStep = std::size_t{16} << 20;
+std::uintptr_t heap_marked_to = 0;
+
+void mark_heap_growth() {
+  const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));  // glibc: the cached break, no system call
+  if (brk > heap_marked_to) {
+    const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const std::uintptr_t from = heap_marked_to / page * page;
+#if defined(MADV_HUGEPAGE)
+    madvise(reinterpret_cast<void*>(from), brk - from, MADV_HUGEPAGE);  // a hint: failure only costs speed
+#endif
+  }
+  heap_marked_to = brk;  // after a trim too, so that the regrown part is marked again
+}
+
 void* try_allocate(std::size_t n) {
-  if (n < large_threshold) return std::malloc(n == 0 ? 1 : n);
+  if (n < large_threshold) {
+    void* p = std::malloc(n == 0 ? 1 : n);
+    if (heap_marked_to != 0) mark_heap_growth();
+    return p;
+  }
   const std::size_t rounded = (n + kHugePage - 1) / kHugePage * kHugePage;
   void* p = std::aligned_alloc(kHugePage, rounded);
 #if defined(MADV_HUGEPAGE)
@@ -63,6 +97,11 @@ void* allocate(std::size_t n) {
 
 void pqmesh::cli::set_large_page_threshold(std::size_t bytes) { large_threshold = bytes; }
 
+void pqmesh::cli::grow_heap_in_huge_pages() {
+  mallopt(M_TOP_PAD, static_cast<int>(kHeapStep));
+  heap_marked_to = reinterpret_cast<std::uintptr_t>(sbrk(0));
+}
+
 void* operator new(std::size_t n) { return allocate(n); }
 void* operator new[](std::size_t n) { return allocate(n); }
 void operator delete(void* p) noexcept { std::free(p); }
@@ -73,5 +112,6 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 #else
 
 void pqmesh::cli::set_large_page_threshold(std::size_t /*bytes*/) {}
+void pqmesh::cli::grow_heap_in_huge_pages() {}
 
 #endif
