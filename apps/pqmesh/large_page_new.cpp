@@ -20,8 +20,8 @@
 // default operator new.
 //
 // The 3D mesher also has the heap of small blocks grow in huge pages
-// (grow_heap_in_huge_pages): its octree data, GMP limbs and box lists come to
-// most of its page faults came from blocks under the threshold.
+// (grow_heap_in_huge_pages): its octree data, GMP limbs and box lists are
+// blocks under the threshold, and they caused most of its page faults.
 #include <cstddef>
 #include <cstdlib>
 #include <new>
