@@ -53,7 +53,7 @@ std::size_t large_threshold = std::size_t{4} << 20;
 // huge page if nothing in it was touched before the marking; growth is seen at
 // the next operator new, after malloc wrote the block that caused it, so each
 // step loses a page or two of its 16. Blocks GMP allocates between two calls of
-// operator new only delay the marking.
+// operator new only delay the marking. (The executable runs one thread.)
 constexpr std::size_t kHeapStep = std::size_t{16} << 20;
 std::uintptr_t heap_marked_to = 0;
 
