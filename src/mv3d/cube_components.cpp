@@ -108,8 +108,7 @@ void walk(const Domain3& dom, const Cube& c, KLine& kl, bool status, const std::
           std::vector<signed char>& node_in_p) {
   const Pos lo = plane_pos(c, kl.line.d, 0), hi = plane_pos(c, kl.line.d, 1);
   std::vector<Event> ev = std::move(kl.nodes);
-  // Room for every crossing up front: an Event may hold exact rationals,
-  // which a growing vector copies (their move is not noexcept).
+  // Room for every crossing up front (one allocation per walk).
   ev.reserve(ev.size() + triangles.size());
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& tri = dom.facet_triangles[static_cast<std::size_t>(triangles[i])];
@@ -263,8 +262,7 @@ bool single_cone(const Domain3& dom, const Cube& c, const std::vector<int>& tris
 }  // namespace
 
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates) {
-  std::array<Line, 12> edge_lines;
-  for (int e = 0; e < 12; ++e) edge_lines[static_cast<std::size_t>(e)] = cube_edge_line(cube, e);
+  EdgeLines edge_lines(cube);
   std::vector<int> out;
   for (const int t : candidates)
     if (triangle_meets(domain, t, cube, edge_lines)) out.push_back(t);
@@ -387,9 +385,8 @@ CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHin
     edges[static_cast<std::size_t>(e)].start = corner[static_cast<std::size_t>(edge_corner(e, 0))];
     edges[static_cast<std::size_t>(e)].end = corner[static_cast<std::size_t>(edge_corner(e, 1))];
   }
-  // A deque: appending never moves the earlier probes (a KLine holds exact
-  // rationals, whose move constructor is not noexcept, so a growing vector
-  // would copy every one of them).
+  // A deque: appending never moves the earlier probes (their lines stay put
+  // while later probes are added).
   std::deque<KLine> probes;
   // A probe on the face (axis a, side), direction d = (a + 1) % 3, fixed
   // coordinate `fc` on axis c = (a + 2) % 3; its ends are junctions on the
@@ -421,17 +418,16 @@ CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHin
     std::sort(sides.begin(), sides.end());
     sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
     // One crossing buffer for all sides and faces: segment_crosses_face
-    // assigns all three coordinates whenever it returns true, so nothing of
-    // an earlier crossing survives (18 rationals fewer to make and free per
-    // side and face).
-    std::array<Pert, 3> w;
+    // assigns the wanted coordinate whenever it returns true, so nothing of
+    // an earlier crossing survives (rationals made once, not per side and face).
+    Pert w;
     for (const auto& s : sides) {
       const Vec3 u = domain.plc.vertices[static_cast<std::size_t>(s[0])], v = domain.plc.vertices[static_cast<std::size_t>(s[1])];
       if (vertex_inside(u, cube) && vertex_inside(v, cube)) continue;
       for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
           if (!segment_crosses_face(u, v, cube, a, side, &w)) continue;
-          Pert fc = w[static_cast<std::size_t>((a + 2) % 3)];
+          Pert fc = w;
           fc.c[detail::kD1] -= 1;
           add_probe(a, side, Pos::of_pert(std::move(fc)));
         }

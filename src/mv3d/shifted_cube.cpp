@@ -53,7 +53,8 @@ Line make_line(int d, Pos f1, Pos f2) {
 Pos Pos::of_pert(Pert v) {
   Pos p;
   bracket_one(v.c[0], p.lo, p.hi);
-  p.exact = std::move(v);
+  p.given = true;
+  p.exact = std::make_shared<const Pert>(std::move(v));
   return p;
 }
 
@@ -80,23 +81,46 @@ Pert crossing(const Line& l, Vec3 a, Vec3 b, Vec3 c) {
   return pos;
 }
 
-// Coefficients of a plane-kind Pos (a double plus s * term) without GMP.
-bool simple(const Pos& p) { return !p.exact && p.line == nullptr && p.lo == p.hi; }
+int sign_of_int(int v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+
+// sign(x - y) for a plane-kind x (x0 + sx e^tx) and a y of another kind, the brackets
+// overlapping (y.lo <= x0 <= y.hi): coefficient by coefficient, GMP only for
+// a constant part of y that is not a double.
+int compare_plane(const Pos& x, const Pos& y) {
+  int r = 0;
+  if (y.lo == y.hi) r = x.lo < y.lo ? -1 : (x.lo > y.lo ? 1 : 0);  // c0(y) == y.lo exactly
+  else r = -sign_of_int(cmp(y.value().c[0], x.lo));
+  if (r != 0) return r;
+  for (int k = 1; k < 6; ++k) {
+    const int xk = x.term == k ? x.sgn : 0;
+    const mpq_class& yk = y.value().c[static_cast<std::size_t>(k)];
+    const int s = xk == 0 ? -sgn(yk) : -mpq_cmp_si(yk.get_mpq_t(), xk, 1);
+    if (s != 0) return s > 0 ? 1 : -1;
+  }
+  return 0;
+}
 
 }  // namespace
 
 const Pert& Pos::value() const {
   if (!exact) {
-    if (line) exact = crossing(*line, a, b, c);
-    else exact = term >= 0 ? Pert::shifted(lo, term, sgn) : Pert::constant(lo);
+    if (line) exact = std::make_shared<const Pert>(crossing(*line, a, b, c));
+    else exact = std::make_shared<const Pert>(term >= 0 ? Pert::shifted(lo, term, sgn) : Pert::constant(lo));
   }
   return *exact;
+}
+
+int Pos::coefficient_sign(int k) const {
+  if (plane_kind()) return term == k ? sgn : 0;
+  return sign_of_int(mpq_sgn(value().c[static_cast<std::size_t>(k)].get_mpq_t()));
 }
 
 int compare(const Pos& x, const Pos& y) {
   if (x.hi < y.lo) return -1;
   if (x.lo > y.hi) return 1;
-  if (simple(x) && simple(y)) {
+  if (x.plane_kind() && !y.plane_kind()) return compare_plane(x, y);
+  if (y.plane_kind() && !x.plane_kind()) return -compare_plane(y, x);
+  if (x.plane_kind() && y.plane_kind()) {
     // x - y = (x0 - y0) + sx e^tx - sy e^ty
     if (x.lo != y.lo) return x.lo < y.lo ? -1 : 1;
     std::array<int, 6> d{};
@@ -133,6 +157,7 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
   // whose axes are (o1, o2) in this cyclic order (predicates.hpp).
   const int nd = static_cast<int>(orient2d_projected(a, b, c, l.d));
   if (nd == 0) return false;  // line parallel to the plane, and not in it
+  const bool point_line = l.lo[0] == l.hi[0] && l.lo[1] == l.hi[1];  // exact double fixed coordinates
   const std::array<Vec3, 3> t{a, b, c};
   for (int i = 0; i < 3; ++i) {
     const Vec3 u = t[static_cast<std::size_t>(i)], v = t[static_cast<std::size_t>((i + 1) % 3)];
@@ -153,16 +178,33 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
       continue;
     }
     // orient2d(u, v, P) = (v1 - u1)(P2 - u2) - (v2 - u2)(P1 - u1), affine in P:
-    // its sign is that of the first non-zero coefficient.
-    const Pert& f1 = l.f1.value();
-    const Pert& f2 = l.f2.value();
-    const mpq_class b1 = q(axis_coord(v, o1)) - q(axis_coord(u, o1)), b2 = q(axis_coord(v, o2)) - q(axis_coord(u, o2));
-    int sg = sgn((f2.c[0] - q(axis_coord(u, o2))) * b1 - (f1.c[0] - q(axis_coord(u, o1))) * b2);
-    for (std::size_t k = 1; k < f1.c.size() && sg == 0; ++k) {
-      if (sgn(f1.c[k]) == 0 && sgn(f2.c[k]) == 0) continue;
-      sg = sgn(f2.c[k] * b1 - f1.c[k] * b2);
+    // its sign is that of the first non-zero coefficient. Constant part: at
+    // a point line it is orient2d at the point, i.e. corner_sign = 0.
+    // Coefficient k >= 1: f2_k b1 - f1_k b2; when one of f1_k, f2_k is zero
+    // its sign is a product of signs (b1, b2 are differences of doubles,
+    // whose signs are comparisons), so GMP runs only when both are non-zero
+    // or the constant part is not a double.
+    int sg = 0;
+    if (!point_line) {
+      const Pert& f1 = l.f1.value();
+      const Pert& f2 = l.f2.value();
+      const mpq_class b1 = q(axis_coord(v, o1)) - q(axis_coord(u, o1));
+      const mpq_class b2 = q(axis_coord(v, o2)) - q(axis_coord(u, o2));
+      sg = sign_of_int(sgn((f2.c[0] - q(axis_coord(u, o2))) * b1 - (f1.c[0] - q(axis_coord(u, o1))) * b2));
     }
-    sg = sg > 0 ? 1 : (sg < 0 ? -1 : 0);
+    const int sb1 = axis_coord(v, o1) > axis_coord(u, o1) ? 1 : (axis_coord(v, o1) < axis_coord(u, o1) ? -1 : 0);
+    const int sb2 = axis_coord(v, o2) > axis_coord(u, o2) ? 1 : (axis_coord(v, o2) < axis_coord(u, o2) ? -1 : 0);
+    for (int k = 1; k < 6 && sg == 0; ++k) {
+      const int s1 = l.f1.coefficient_sign(k), s2 = l.f2.coefficient_sign(k);
+      if (s1 == 0) sg = s2 * sb1;
+      else if (s2 == 0) sg = -s1 * sb2;
+      else {
+        const mpq_class b1 = q(axis_coord(v, o1)) - q(axis_coord(u, o1));
+        const mpq_class b2 = q(axis_coord(v, o2)) - q(axis_coord(u, o2));
+        const auto kk = static_cast<std::size_t>(k);
+        sg = sign_of_int(sgn(l.f2.value().c[kk] * b1 - l.f1.value().c[kk] * b2));
+      }
+    }
     if (sg == 0) throw InternalError("mv3d: a probe line passes through a triangle side");
     if (sg != nd) return false;
   }
@@ -184,7 +226,6 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
     (o2 == 0 ? x.x : o2 == 1 ? x.y : x.z) = t2;
     return x;
   };
-  const bool point_line = l.lo[0] == l.hi[0] && l.lo[1] == l.hi[1];  // exact double fixed coordinates
   const auto below_or_above = [&](double td) {  // sign(td - p0) if one on the bracket box, else 0
     int s = 0;
     for (int k = 0; k < (point_line ? 1 : 4); ++k) {
@@ -201,8 +242,11 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
   const double nd_d = n[l.d];
   pos.lo = -HUGE_VAL;
   pos.hi = HUGE_VAL;
-  if (axis_coord(a, l.d) == axis_coord(b, l.d) && axis_coord(a, l.d) == axis_coord(c, l.d)) {  // the plane x_d = a_d: p0 = a_d exactly
-    pos.lo = pos.hi = axis_coord(a, l.d);
+  if (axis_coord(a, l.d) == axis_coord(b, l.d) && axis_coord(a, l.d) == axis_coord(c, l.d)) {
+    // The plane x_d = a_d: n_o1 = n_o2 = 0 exactly, so the crossing is the
+    // constant a_d with every infinitesimal coefficient 0 (crossing() would
+    // give m1 = m2 = 0): a plane-kind Pos, compared without GMP.
+    pos = Pos::of_double(axis_coord(a, l.d));
   } else if (nd_d != 0) {
     const double est = axis_coord(a, l.d) - (n[o1] * (f1 - axis_coord(a, o1)) + n[o2] * (f2 - axis_coord(a, o2))) / nd_d;
     double scale = std::fabs(est) + std::fabs(f1) + std::fabs(f2);
@@ -217,8 +261,8 @@ bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering) {
 }
 
 // Does segment uv cross the face of C_e on plane (axis, side) inside the
-// face? Then w receives the crossing point (all three coordinates).
-bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std::array<Pert, 3>* w) {
+// face? Then w receives coordinate (axis + 2) % 3 of the crossing point.
+bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, Pert* w) {
   // Straddle, exactly on doubles: u_axis > hi_axis + e  <=>  u_axis > hi_axis, and
   // u_axis < lo_axis - e  <=>  u_axis < lo_axis.
   const auto beyond = [&](Vec3 p) {
@@ -230,58 +274,43 @@ bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std
     if ((axis_coord(u, j) < lo_of(c, j) && axis_coord(v, j) < lo_of(c, j)) || (axis_coord(u, j) > hi_of(c, j) && axis_coord(v, j) > hi_of(c, j)))
       return false;
   }
-  // Exact filter on the constant part x0 of the crossing's coordinate j:
-  // (x0 - L)(v_a - u_a) = -orient2d((u_a, u_j), (v_a, v_j), (A, L)) for the
-  // face plane A; a non-zero sign decides x against L -+ e^(j+1).
-  {
-    const double plane_a = side == 1 ? hi_of(c, axis) : lo_of(c, axis);
-    const int sa = axis_coord(v, axis) > axis_coord(u, axis) ? 1 : -1;  // the straddle makes them differ
-    bool decided = true;
-    for (int j = 0; j < 3; ++j) {
-      if (j == axis) continue;
-      const Vec2 u2{axis_coord(u, axis), axis_coord(u, j)}, v2{axis_coord(v, axis), axis_coord(v, j)};
-      const int sl = -static_cast<int>(orient2d(u2, v2, {plane_a, lo_of(c, j)})) * sa;
-      const int sh = -static_cast<int>(orient2d(u2, v2, {plane_a, hi_of(c, j)})) * sa;
-      if (sl < 0 || sh > 0) return false;
-      if (sl == 0 || sh == 0) decided = false;
-    }
-    if (decided) {
-      if (w) {
-        // The crossing u + t (v - u) at x_axis = A -+ e^(axis+1): coordinate j
-        // is u_j + (A - u_a) r -+ r e^(axis+1), r = (v_j - u_j) / (v_a - u_a).
-        const mpq_class den = q(axis_coord(v, axis)) - q(axis_coord(u, axis)), off = q(plane_a) - q(axis_coord(u, axis));
-        for (int j = 0; j < 3; ++j) {
-          Pert& x = (*w)[static_cast<std::size_t>(j)];
-          if (j == axis) {
-            x = plane(c, axis, side);
-            continue;
-          }
-          const mpq_class r = (q(axis_coord(v, j)) - q(axis_coord(u, j))) / den;
-          for (mpq_class& y : x.c) y = 0;  // reuses the caller's storage (no Pert temporary)
-          x.c[0] = q(axis_coord(u, j)) + off * r;
-          x.c[static_cast<std::size_t>(detail::kE1 + axis)] = side == 1 ? mpq_class(r) : mpq_class(-r);
-        }
-      }
-      return true;
-    }
-  }
-  const Pert a = plane(c, axis, side);
-  std::array<Pert, 3> p;
-  const Pert off = a - Pert::constant(axis_coord(u, axis));
-  const mpq_class den = q(axis_coord(v, axis)) - q(axis_coord(u, axis));
+  // The crossing x = u + t (v - u) with the shifted plane x_axis = A + s e^(axis+1)
+  // (A the face plane, s = +1 on side 1, -1 on side 0): coordinate j is
+  // x0_j + s r_j e^(axis+1), r_j = (v_j - u_j) / (v_a - u_a), x0_j its
+  // constant part at x_axis = A. It is inside the face iff, for both
+  // j != axis, lo_j - e^(j+1) < x_j < hi_j + e^(j+1) (never equal: the
+  // e^(j+1) coefficient of the difference is +-1).
+  const double plane_a = side == 1 ? hi_of(c, axis) : lo_of(c, axis);
+  const int sa = axis_coord(v, axis) > axis_coord(u, axis) ? 1 : -1;  // the straddle makes them differ
+  const int s_face = side == 1 ? 1 : -1;
   for (int j = 0; j < 3; ++j) {
-    if (j == axis) {
-      p[static_cast<std::size_t>(j)] = a;
-      continue;
+    if (j == axis) continue;
+    // Constant parts: (x0 - L)(v_a - u_a) = -orient2d((u_a, u_j), (v_a, v_j), (A, L)).
+    const Vec2 u2{axis_coord(u, axis), axis_coord(u, j)}, v2{axis_coord(v, axis), axis_coord(v, j)};
+    int sl = -static_cast<int>(orient2d(u2, v2, {plane_a, lo_of(c, j)})) * sa;  // sign(x0_j - lo_j)
+    int sh = -static_cast<int>(orient2d(u2, v2, {plane_a, hi_of(c, j)})) * sa;  // sign(x0_j - hi_j)
+    if (sl == 0 || sh == 0) {
+      // x0_j on a plane of C: the first non-zero infinitesimal coefficient of
+      // x_j - (lo_j - e^(j+1)) (resp. - (hi_j + e^(j+1))) decides: s r_j on
+      // e^(axis+1), +1 (resp. -1) on e^(j+1); e^(axis+1) comes first iff
+      // axis < j. sign(r_j) = sign(v_j - u_j) sign(v_a - u_a), by comparisons.
+      const int sr = (axis_coord(v, j) > axis_coord(u, j) ? 1 : (axis_coord(v, j) < axis_coord(u, j) ? -1 : 0)) * sa;
+      const auto tie = [&](int lower_plane) { return axis < j && sr != 0 ? s_face * sr : (lower_plane ? 1 : -1); };
+      if (sl == 0) sl = tie(1);
+      if (sh == 0) sh = tie(0);
     }
-    Pert x = off * ((q(axis_coord(v, j)) - q(axis_coord(u, j))) / den);
-    x.c[0] += q(axis_coord(u, j));
-    const int sl = detail::compare(x, plane(c, j, 0)), sh = detail::compare(x, plane(c, j, 1));
-    if (sl == 0 || sh == 0) throw InternalError("mv3d: a segment passes through an edge of the shifted cube");
     if (sl < 0 || sh > 0) return false;
-    p[static_cast<std::size_t>(j)] = std::move(x);
   }
-  if (w) *w = std::move(p);
+  if (w) {
+    // Coordinate j = (axis + 2) % 3 of the crossing, exactly: constant part
+    // u_j + (A - u_a) r_j, coefficient s r_j on e^(axis+1).
+    const int j = (axis + 2) % 3;
+    const mpq_class den = q(axis_coord(v, axis)) - q(axis_coord(u, axis)), off = q(plane_a) - q(axis_coord(u, axis));
+    const mpq_class r = (q(axis_coord(v, j)) - q(axis_coord(u, j))) / den;
+    for (mpq_class& y : w->c) y = 0;  // reuses the caller's storage (no Pert temporary)
+    w->c[0] = q(axis_coord(u, j)) + off * r;
+    w->c[static_cast<std::size_t>(detail::kE1 + axis)] = side == 1 ? mpq_class(r) : mpq_class(-r);
+  }
   return true;
 }
 
@@ -306,7 +335,7 @@ int edge_corner(int e, int end) {
   return (end << d) | (s1 << ((d + 1) % 3)) | (s2 << ((d + 2) % 3));
 }
 
-bool triangle_meets(const Domain3& dom, int t, const Cube& c, const std::array<Line, 12>& edge_lines) {
+bool triangle_meets(const Domain3& dom, int t, const Cube& c, EdgeLines& edge_lines) {
   const auto& tri = dom.facet_triangles[static_cast<std::size_t>(t)];
   const Vec3 a = dom.plc.vertices[static_cast<std::size_t>(tri[0])];
   const Vec3 b = dom.plc.vertices[static_cast<std::size_t>(tri[1])];
@@ -323,7 +352,7 @@ bool triangle_meets(const Domain3& dom, int t, const Cube& c, const std::array<L
         if (segment_crosses_face(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>((i + 1) % 3)], c, axis, side,
                                  nullptr))
           return true;
-  for (const Line& l : edge_lines) {
+  for (const Line& l : edge_lines.get()) {
     Pos pos;
     bool entering = false;
     if (!line_hit(l, a, b, p, pos, entering)) continue;

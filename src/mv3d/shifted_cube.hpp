@@ -7,7 +7,7 @@
 // predicates (orient2d, orient3d of predicates.hpp) on the constant parts and
 // build Perts only when the constant parts tie (Pos below).
 #include <array>
-#include <optional>
+#include <memory>
 #include <span>
 
 #include "mv3d/cube_components.hpp"
@@ -31,16 +31,20 @@ int side_sign(double v, const Pert& a);
 
 // A perturbed number known by a double bracket [lo, hi] of its constant part
 // (lo <= c0 <= hi, established exactly) and, on demand, exactly. Two Pos whose
-// brackets are disjoint compare by the brackets; otherwise both are made exact.
+// brackets are disjoint compare by the brackets; otherwise they compare
+// exactly (a plane-kind Pos never needs its Pert: its coefficients are known).
 // Kinds: a double plus s * term (a shifted plane), a given Pert, or the
 // crossing of a Line with a triangle (computed only when a tie needs it).
+// The exact value is shared and immutable once made, so copying or moving a
+// Pos (events, lines, junctions) never copies rationals.
 struct Line;
 struct Pos {
   double lo = 0, hi = 0;
-  // lazily filled exact value
-  mutable std::optional<Pert> exact;
+  // lazily filled exact value (never modified once set)
+  mutable std::shared_ptr<const Pert> exact;
   // plane kind: value lo (== hi), term, sign; crossing kind: line, triangle
   int term = -1, sgn = 0;
+  bool given = false;  // made by of_pert
   const Line* line = nullptr;
   Vec3 a{}, b{}, c{};
 
@@ -53,6 +57,10 @@ struct Pos {
   }
   static Pos of_pert(Pert v);
   const Pert& value() const;
+  // Plane kind (a double plus s * term): coefficients known without a Pert.
+  bool plane_kind() const { return line == nullptr && !given; }
+  // The sign of coefficient k >= 1 (exact; no Pert made for the plane kind).
+  int coefficient_sign(int k) const;
 };
 // sign(x - y)
 int compare(const Pos& x, const Pos& y);
@@ -78,8 +86,9 @@ Line make_line(int d, Pos f1, Pos f2);
 bool line_hit(const Line& l, Vec3 a, Vec3 b, Vec3 c, Pos& pos, bool& entering);
 
 // Does segment uv cross the face of C_e on plane (axis, side) inside the
-// face? Then *w (if given) receives the crossing point.
-bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, std::array<Pert, 3>* w);
+// face? Then *w (if given) receives coordinate (axis + 2) % 3 of the crossing
+// point (the fixed coordinate of the probe through it, cube_components.cpp).
+bool segment_crosses_face(Vec3 u, Vec3 v, const Cube& c, int axis, int side, Pert* w);
 
 // Does the closed segment uv meet C_e? (Exact double filters first.)
 bool segment_meets(Vec3 u, Vec3 v, const Cube& c);
@@ -92,8 +101,27 @@ Line cube_edge_line(const Cube& c, int e);
 // end of edge e.
 int edge_corner(int e, int end);
 
-// Does facet triangle t meet C_e? edge_lines[e] = cube_edge_line(c, e).
-bool triangle_meets(const Domain3& dom, int t, const Cube& c, const std::array<Line, 12>& edge_lines);
+// The 12 edge lines of C_e (cube_edge_line), made on first use: most
+// triangles are decided before any edge line is needed.
+class EdgeLines {
+ public:
+  explicit EdgeLines(const Cube& c) : cube_(c) {}
+  const std::array<Line, 12>& get() {
+    if (!made_) {
+      for (int e = 0; e < 12; ++e) lines_[static_cast<std::size_t>(e)] = cube_edge_line(cube_, e);
+      made_ = true;
+    }
+    return lines_;
+  }
+
+ private:
+  Cube cube_;
+  bool made_ = false;
+  std::array<Line, 12> lines_{};
+};
+
+// Does facet triangle t meet C_e? edge_lines: those of c.
+bool triangle_meets(const Domain3& dom, int t, const Cube& c, EdgeLines& edge_lines);
 
 // A point with perturbed coordinates, e.g. a corner of C_e.
 using PPoint = std::array<Pos, 3>;

@@ -300,14 +300,21 @@ double LocalFeatureSize3::Impl::at(Vec3 x) const {
   if (tgen.size() < ntri) tgen.resize(ntri, 0);
   ++gen;
   cand.clear();
+  // Set when a shell adds a candidate or lowers a provisional distance:
+  // otherwise the candidates and their distances are those of the previous
+  // shell, and so is `best` (the minimum over disjoint candidate pairs of the
+  // larger distance, whatever the order of ties; see first_disjoint_pair).
+  bool changed = false;
   auto offer = [&](LfsFeature3 f, double d2) {
     const auto id = lfs_uz(model.index(f));
     if (fgen[id] != gen) {
       fgen[id] = gen;
       fd2[id] = d2;
       cand.push_back({d2, f});
+      changed = true;
     } else if (d2 < fd2[id]) {
       fd2[id] = d2;
+      changed = true;
     }
   };
   auto take = [&](int t) {
@@ -327,6 +334,7 @@ double LocalFeatureSize3::Impl::at(Vec3 x) const {
     for (int q = cell_start[c]; q < cell_start[c + 1]; ++q) take(cell_tris[lfs_uz(q)]);
   };
   const int rmax = std::max({ix[0], n[0] - 1 - ix[0], ix[1], n[1] - 1 - ix[1], ix[2], n[2] - 1 - ix[2]});
+  double best = detail::kLfsInf;
   for (int r = 0;; ++r) {
     const int i0 = ix[0] - r, i1 = ix[0] + r, j0 = ix[1] - r, j1 = ix[1] + r, k0 = ix[2] - r, k1 = ix[2] + r;
     for (int k = std::max(k0, 0); k <= std::min(k1, n[2] - 1); ++k)
@@ -338,17 +346,20 @@ double LocalFeatureSize3::Impl::at(Vec3 x) const {
           if (i1 < n[0] && i1 != i0) cell(i1, j, k);
         }
       }
-    // Provisional facet distances may have dropped: refresh, then sort.
-    for (auto& c : cand) c.d2 = fd2[lfs_uz(model.index(c.f))];
-    // Only a short sorted prefix is usually needed (k is small): sort the
-    // nearest few, fall back to the full order when no pair completes there.
-    const auto by_d2 = [](const Candidate& p, const Candidate& q) { return p.d2 < q.d2; };
-    const std::size_t head = std::min<std::size_t>(cand.size(), 24);
-    std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(head), cand.end(), by_d2);
-    double best = detail::first_disjoint_pair(model, cand, head);
-    if (best == detail::kLfsInf && head < cand.size()) {
-      std::sort(cand.begin(), cand.end(), by_d2);
-      best = detail::first_disjoint_pair(model, cand, cand.size());
+    if (changed) {
+      changed = false;
+      // Provisional facet distances may have dropped: refresh, then sort.
+      for (auto& c : cand) c.d2 = fd2[lfs_uz(model.index(c.f))];
+      // Only a short sorted prefix is usually needed (k is small): sort the
+      // nearest few, fall back to the full order when no pair completes there.
+      const auto by_d2 = [](const Candidate& p, const Candidate& q) { return p.d2 < q.d2; };
+      const std::size_t head = std::min<std::size_t>(cand.size(), 24);
+      std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(head), cand.end(), by_d2);
+      best = detail::first_disjoint_pair(model, cand, head);
+      if (best == detail::kLfsInf && head < cand.size()) {
+        std::sort(cand.begin(), cand.end(), by_d2);
+        best = detail::first_disjoint_pair(model, cand, cand.size());
+      }
     }
     if (r >= rmax) return std::sqrt(best);  // every cell seen
     // Lower bound on the distance to anything in a cell outside the block of
