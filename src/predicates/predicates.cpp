@@ -249,7 +249,9 @@ Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double permanent = std::abs(bx) * (std::abs(cy * dz) + std::abs(cz * dy)) +
                            std::abs(by) * (std::abs(cx * dz) + std::abs(cz * dx)) +
                            std::abs(bz) * (std::abs(cx * dy) + std::abs(cy * dx));
-  if (Sign s{}; detail::filtered_sign(det, permanent, 16, s)) return s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 16, s,
+                                      [&] { return detail::no_tiny_factor(bx, by, bz, cx, cy, cz, dx, dy, dz); }))
+    return s;
   if (Sign s = Sign::Zero; detail::orient3d_expansion(a, b, c, d, s)) return s;
   const mpq_class m[3][3] = {{q(b.x) - q(a.x), q(b.y) - q(a.y), q(b.z) - q(a.z)},
                              {q(c.x) - q(a.x), q(c.y) - q(a.y), q(c.z) - q(a.z)},
@@ -352,7 +354,10 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
     det += s * lift[i] * minor3(i, false);
     permanent += lift[i] * minor3(i, true);
   }
-  if (Sign s{}; detail::filtered_sign(det, permanent, 64, s)) return -s;
+  const auto no_tiny = [&] {
+    return std::all_of(std::begin(p), std::end(p), [](Vec3 v) { return detail::no_tiny_factor(v.x, v.y, v.z); });
+  };
+  if (Sign s{}; detail::filtered_sign(det, permanent, 64, s, no_tiny)) return -s;
   mpq_class pe[4][3], lq[4];
   const Vec3 src[4] = {a, b, c, d};
   for (int i = 0; i < 4; ++i) {

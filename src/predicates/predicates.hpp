@@ -41,15 +41,18 @@ constexpr double kTinyPermanent = 1e-280;
 // double, permanent the same expression with every term replaced by its
 // absolute value, and factor * eps * permanent bounds the rounding error of
 // det (each predicate states its factor). Returns true with the sign when det
-// clears the bound, or with Zero when the permanent is exactly 0 (then every
-// term, and so the determinant, is exactly 0); false (sign untouched) when a
-// later, exact stage must decide: det within the bound, a permanent so small
-// that underflow could spoil the bound, or a NaN. The factors are
+// clears the bound, or with Zero when the permanent is exactly 0 and
+// `no_tiny_factor()` holds (then no product of nonzero factors underflowed, so
+// every term has a zero factor and the determinant is exactly 0); false (sign
+// untouched) when a later, exact stage must decide: det within the bound, a
+// permanent so small that underflow could spoil the bound, a zero permanent
+// that may come from underflow, or a NaN. The factors are
 // deliberately generous (a few times what a careful rounding analysis gives
 // for each expression tree): a too large bound only sends more cases to the
 // exact stages, never a wrong sign. (An out-parameter, not std::optional: the
 // inline callers then compile to plain branches.)
-constexpr bool filtered_sign(double det, double permanent, double factor, Sign& sign) {
+template <class NoTinyFactor>
+constexpr bool filtered_sign(double det, double permanent, double factor, Sign& sign, NoTinyFactor no_tiny_factor) {
   if (permanent > kTinyPermanent) {
     const double bound = factor * kPredicateEps * permanent;
     if (det > bound) {
@@ -62,11 +65,19 @@ constexpr bool filtered_sign(double det, double permanent, double factor, Sign& 
     }
     return false;
   }
-  if (permanent == 0) {
+  if (permanent == 0 && no_tiny_factor()) {
     sign = Sign::Zero;
     return true;
   }
   return false;
+}
+// True when every factor (a coordinate difference) is zero or at least 2^-200
+// in magnitude: a product of up to five such nonzero factors (insphere's lift
+// times a 3x3 minor) is at least 2^-1000 and cannot underflow to zero. Only
+// evaluated when a permanent is exactly 0.
+template <class... Factors>
+constexpr bool no_tiny_factor(Factors... f) {
+  return ((f == 0 || f >= 0x1p-200 || f <= -0x1p-200) && ...);
 }
 // The stages after the double filter (predicates.cpp): the error-free
 // "certified" evaluation, then (orient2d) an exact expansion sum, then GMP.
@@ -115,13 +126,15 @@ bool orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign& sign);
 // The double filter is inline (it decides almost every call; the mesher calls
 // this tens of millions of times): the determinant in double with the error
 // bound 8 eps times the permanent |l| + |r| (a few times the bound a careful
-// rounding analysis gives); a permanent of exactly 0 means every term is 0.
+// rounding analysis gives); a permanent of exactly 0 means every term is 0
+// unless a product underflowed (detail::no_tiny_factor).
 inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
   const double l = acx * bcy, r = acy * bcx;
   const double det = l - r;
   const double permanent = std::abs(l) + std::abs(r);
-  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s, [&] { return detail::no_tiny_factor(acx, bcx, acy, bcy); }))
+    return s;
   return detail::orient2d_after_filter(a, b, c);
 }
 
@@ -146,7 +159,9 @@ inline Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double permanent = alift * (std::abs(bdx * cdy) + std::abs(bdy * cdx)) +
                            blift * (std::abs(cdx * ady) + std::abs(cdy * adx)) +
                            clift * (std::abs(adx * bdy) + std::abs(ady * bdx));
-  if (Sign s{}; detail::filtered_sign(det, permanent, 32, s)) return s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 32, s,
+                                      [&] { return detail::no_tiny_factor(adx, ady, bdx, bdy, cdx, cdy); }))
+    return s;
   return detail::incircle_after_filter(a, b, c, d);
 }
 
@@ -162,7 +177,8 @@ inline Sign dot_sign(Vec2 a, Vec2 b, Vec2 c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
   const double l = ux * vx, r = uy * vy;
   const double det = l + r, permanent = std::abs(l) + std::abs(r);
-  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s, [&] { return detail::no_tiny_factor(ux, uy, vx, vy); }))
+    return s;
   return detail::dot_sign_after_filter(a, b, c);
 }
 
@@ -174,7 +190,9 @@ inline Sign dot_sign(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double vx = d.x - c.x, vy = d.y - c.y, vz = d.z - c.z;
   const double px = ux * vx, py = uy * vy, pz = uz * vz;
   const double det = px + py + pz, permanent = std::abs(px) + std::abs(py) + std::abs(pz);
-  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s)) return s;
+  if (Sign s{}; detail::filtered_sign(det, permanent, 8, s,
+                                      [&] { return detail::no_tiny_factor(ux, uy, uz, vx, vy, vz); }))
+    return s;
   return detail::dot_sign_after_filter(a, b, c, d);
 }
 // Sign of (b - a) . (c - a), as in 2D.

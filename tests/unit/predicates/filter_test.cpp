@@ -18,9 +18,9 @@ namespace {
 
 // Sign the filter reports, or nullopt when it stays silent (the sign is
 // preset, to see that a silent filter leaves it untouched).
-std::optional<Sign> filtered(double det, double permanent, double factor) {
+std::optional<Sign> filtered(double det, double permanent, double factor, bool no_tiny_factor = true) {
   Sign s = Sign::Negative;
-  if (detail::filtered_sign(det, permanent, factor, s)) return s;
+  if (detail::filtered_sign(det, permanent, factor, s, [&] { return no_tiny_factor; })) return s;
   EXPECT_EQ(s, Sign::Negative) << "a silent filter must leave the sign alone";
   return std::nullopt;
 }
@@ -38,6 +38,11 @@ TEST(FilteredSign, DecidesOnlyOutsideTheBound) {
 
 TEST(FilteredSign, ZeroPermanentTinyPermanentAndNaN) {
   EXPECT_EQ(filtered(0.0, 0.0, 8), Sign::Zero);  // every term exactly zero
+  // A zero permanent from factors so small that a product may have underflowed: silent.
+  EXPECT_FALSE(filtered(0.0, 0.0, 8, /*no_tiny_factor=*/false).has_value());
+  EXPECT_TRUE(detail::no_tiny_factor(0.0, 0x1p-200, -0x1p-200, 1.0));
+  EXPECT_FALSE(detail::no_tiny_factor(0.0, 0x1p-201));
+  EXPECT_FALSE(detail::no_tiny_factor(-0x1p-600, 1.0));
   // Below kTinyPermanent underflow could spoil the bound: silent even for a clear det.
   EXPECT_FALSE(filtered(1e-290, 1e-290, 8).has_value());
   const double nan = std::numeric_limits<double>::quiet_NaN();
