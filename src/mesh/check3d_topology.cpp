@@ -28,6 +28,30 @@ int sort_with_parity(std::array<int, 3>& x) {
   return parity;
 }
 
+// Sorts the four vertex ids of a tetrahedron in place (a five-comparator
+// network); returns the parity of the permutation (1: odd, i.e. the sorted
+// tetrahedron has the opposite orientation).
+int sort4_with_parity(std::array<int, 4>& x) {
+  int parity = 0;
+  const auto order = [&](int i, int j) {
+    if (x[i] > x[j]) std::swap(x[i], x[j]), parity ^= 1;
+  };
+  order(0, 1);
+  order(2, 3);
+  order(0, 2);
+  order(1, 3);
+  order(1, 2);
+  return parity;
+}
+
+// Parity of sorting row k of kFaces (the face opposite vertex k of a sorted
+// tetrahedron): stage3_faces relies on 0, 1, 0, 1.
+constexpr int face_parity(int k) {
+  const int x = kFaces[k][0], y = kFaces[k][1], z = kFaces[k][2];
+  return ((x > y) + (x > z) + (y > z)) % 2;  // inversions
+}
+static_assert(face_parity(0) == 0 && face_parity(1) == 1 && face_parity(2) == 0 && face_parity(3) == 1);
+
 }  // namespace
 
 // ---- stage 1 -------------------------------------------------------------
@@ -105,8 +129,10 @@ bool Checker3::stage3_faces() {
   // vertex's bucket of face records is built from its filed tetrahedra when
   // its turn comes: 8 bytes per tetrahedron instead of a table of all faces.
   struct Rec {
-    int b, c;
+    std::uint64_t bc;    // (b << 32) | c: the face (a, b, c), a < b < c (ids >= 0 after stage 1)
     std::uint32_t code;  // (tetrahedron << 1) | parity of the sorting permutation
+    int b() const { return static_cast<int>(bc >> 32); }
+    int c() const { return static_cast<int>(bc & 0xffffffffu); }
   };
   auto two_smallest = [](const std::array<int, 4>& q) {
     int a = std::min(q[0], q[1]), b = std::max(q[0], q[1]);
@@ -139,29 +165,42 @@ bool Checker3::stage3_faces() {
   std::vector<Rec> recs;
   for (int a = 0; a < nv; ++a) {
     recs.clear();
+    // The tetrahedron sorted once, s0 < s1 < s2 < s3 (distinct: stage 2 found
+    // it positive), with the parity P of that permutation. Its outward faces
+    // are kFaces of (s0, s1, s2, s3) when P is even and their reverses when
+    // odd; sorted, the face opposite s3 is (s0 s1 s2) from (s0 s2 s1): parity
+    // 1 ^ P; opposite s2, (s0 s1 s3): P; opposite s1, (s0 s2 s3) from
+    // (s0 s3 s2): 1 ^ P; opposite s0, (s1 s2 s3): P. Those through s0 have
+    // smallest vertex s0, the last one s1: the records of vertex a are the
+    // faces whose smallest vertex is a, as sorting each face would give.
+    const auto record = [&](int b, int c, std::uint32_t t, int parity) {
+      recs.push_back(Rec{(std::uint64_t{static_cast<std::uint32_t>(b)} << 32) | static_cast<std::uint32_t>(c),
+                         (t << 1) | static_cast<std::uint32_t>(parity)});
+    };
     for (int j = start[a]; j < start[a + 1]; ++j) {
       const int t = filed[j];
-      const auto& q = m_.tetrahedra[t];
-      for (int f = 0; f < 4; ++f) {
-        std::array<int, 3> x = {q[kFaces[f][0]], q[kFaces[f][1]], q[kFaces[f][2]]};
-        const auto parity = static_cast<std::uint32_t>(sort_with_parity(x));
-        if (x[0] == a) recs.push_back(Rec{x[1], x[2], (static_cast<std::uint32_t>(t) << 1) | parity});
+      std::array<int, 4> s = m_.tetrahedra[t];
+      const int parity = sort4_with_parity(s);
+      const auto tu = static_cast<std::uint32_t>(t);
+      if (s[0] == a) {
+        record(s[1], s[2], tu, 1 ^ parity);
+        record(s[1], s[3], tu, parity);
+        record(s[2], s[3], tu, 1 ^ parity);
+      } else {  // filed under its second smallest vertex
+        record(s[2], s[3], tu, parity);
       }
     }
     auto first = recs.begin(), last = recs.end();
-    std::sort(first, last, [](const Rec& x, const Rec& y) {
-      if (x.b != y.b) return x.b < y.b;
-      if (x.c != y.c) return x.c < y.c;
-      return x.code < y.code;
-    });
+    std::sort(first, last, [](const Rec& x, const Rec& y) { return x.bc != y.bc ? x.bc < y.bc : x.code < y.code; });
     for (auto it = first; it != last;) {
       auto run_end = it + 1;
-      while (run_end != last && run_end->b == it->b && run_end->c == it->c) ++run_end;
+      while (run_end != last && run_end->bc == it->bc) ++run_end;
       const long count = run_end - it;
-      const int face[3] = {a, it->b, it->c};
+      const int face[3] = {a, it->b(), it->c()};
       if (count == 1) {
         const bool odd = (it->code & 1u) != 0;
-        faces_.boundary.push_back(odd ? std::array<int, 3>{a, it->c, it->b} : std::array<int, 3>{a, it->b, it->c});
+        faces_.boundary.push_back(odd ? std::array<int, 3>{a, it->c(), it->b()}
+                                      : std::array<int, 3>{a, it->b(), it->c()});
         faces_.boundary_tet.push_back(static_cast<int>(it->code >> 1));
       } else if (count == 2) {
         if ((it->code & 1u) == ((it + 1)->code & 1u)) {

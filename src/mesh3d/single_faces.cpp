@@ -43,12 +43,37 @@ std::array<int, 3> sorted3(std::array<int, 3> f) {
 }
 
 struct FiledFace {
-  int b, c;           // the other two vertex ids, b <= c
+  std::uint64_t bc;   // (b << 32) | c: the other two vertex ids, b <= c (ids >= 0)
   std::int64_t code;  // 4 t + i
   friend bool operator<(const FiledFace& x, const FiledFace& y) {
-    return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.code < y.code);
+    return x.bc != y.bc ? x.bc < y.bc : x.code < y.code;
   }
 };
+
+FiledFace filed_face(int b, int c, std::int64_t code) {
+  return {(std::uint64_t{static_cast<std::uint32_t>(b)} << 32) | static_cast<std::uint32_t>(c), code};
+}
+
+// outward_face's index of the face opposite position j of the tetrahedron:
+// face 0 omits k3, 1 omits k2, 2 omits k0, 3 omits k1.
+constexpr int kFaceOpposite[4] = {2, 3, 1, 0};
+
+// The vertex positions 0..3 of tetrahedron k in increasing order of their ids
+// (a five-comparator network); false when an id repeats.
+bool sorted_positions(const std::array<int, 4>& k, std::array<int, 4>& pos) {
+  pos = {0, 1, 2, 3};
+  const auto order = [&](int i, int j) {
+    if (k[static_cast<std::size_t>(pos[i])] > k[static_cast<std::size_t>(pos[j])]) std::swap(pos[i], pos[j]);
+  };
+  order(0, 1);
+  order(2, 3);
+  order(0, 2);
+  order(1, 3);
+  order(1, 2);
+  for (int i = 0; i < 3; ++i)
+    if (k[static_cast<std::size_t>(pos[i])] == k[static_cast<std::size_t>(pos[i + 1])]) return false;
+  return true;
+}
 
 }  // namespace
 
@@ -78,15 +103,33 @@ std::vector<std::int64_t> single_faces(const std::vector<std::array<int, 4>>& te
     here.clear();
     for (std::size_t j = offset[v]; j < offset[v + 1]; ++j) {
       const auto t = static_cast<std::size_t>(filed[j]);
-      for (int i = 0; i < 4; ++i) {
-        const std::array<int, 3> f = sorted3(outward_face(tetrahedra[t], i));
-        if (f[0] == static_cast<int>(v)) here.push_back({f[1], f[2], static_cast<std::int64_t>(4 * t) + i});
+      const auto& k = tetrahedra[t];
+      const auto code = [&](int opposite) { return static_cast<std::int64_t>(4 * t) + kFaceOpposite[opposite]; };
+      std::array<int, 4> pos{};
+      if (sorted_positions(k, pos)) {
+        // Distinct ids s0 < s1 < s2 < s3 (s_i = k[pos[i]]): the faces with
+        // smallest vertex s0 omit s3, s2, s1; the one with smallest s1 omits
+        // s0 (the tetrahedron is filed under s0 and s1 only).
+        const int s1 = k[static_cast<std::size_t>(pos[1])], s2 = k[static_cast<std::size_t>(pos[2])],
+                  s3 = k[static_cast<std::size_t>(pos[3])];
+        if (k[static_cast<std::size_t>(pos[0])] == static_cast<int>(v)) {
+          here.push_back(filed_face(s1, s2, code(pos[3])));
+          here.push_back(filed_face(s1, s3, code(pos[2])));
+          here.push_back(filed_face(s2, s3, code(pos[1])));
+        } else {
+          here.push_back(filed_face(s2, s3, code(pos[0])));
+        }
+        continue;
+      }
+      for (int i = 0; i < 4; ++i) {  // a repeated id: each face sorted on its own
+        const std::array<int, 3> f = sorted3(outward_face(k, i));
+        if (f[0] == static_cast<int>(v)) here.push_back(filed_face(f[1], f[2], static_cast<std::int64_t>(4 * t) + i));
       }
     }
     std::sort(here.begin(), here.end());
     for (std::size_t i = 0; i < here.size();) {
       std::size_t j = i + 1;
-      while (j < here.size() && here[j].b == here[i].b && here[j].c == here[i].c) ++j;
+      while (j < here.size() && here[j].bc == here[i].bc) ++j;
       if (j == i + 1) singles.push_back(here[i].code);
       i = j;
     }

@@ -148,16 +148,38 @@ bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {
 // candidate that contains all four points is an enclosing ball, hence at least
 // as large as the minimal one; the minimal one is a candidate and contains all
 // four. So the answer is the smallest candidate that contains all four points.
+//
+// Only a LONGEST edge can be the answer's diametral edge: if the closed
+// diametral ball of edge e holds all four points, every edge has length at
+// most |e| (two points of a ball of diameter |e|). So an edge that is provably
+// shorter than another needs no (exact) test: it would fail it. "Provably":
+// the computed squared lengths c = fl(|d|^2) (d = fl(q - p)) are within a
+// relative 5 ulps of the exact ones plus an absolute 2^-1072 of underflow;
+// c_e (1 + 2^-40) < c_max with 2^-960 <= c_max <= DBL_MAX (finite) leaves a
+// gap of ~2^-40 c_max far above both, so |e| < |longest| exactly. Edges not so
+// separated (ties: the grid tetrahedra's equal diagonals, a NaN) take the
+// exact test as before. The tested edges' radii are the same doubles
+// (0.5 sqrt(c) = 0.5 norm(d)), so the result is bit for bit the same.
 double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r) {
   double best = circum_r;  // +infinity for a flat tetrahedron
   static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  for (const auto& e : kEdges) {
+  std::array<double, 6> length2{};
+  double longest2 = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    length2[i] = norm2(p[kEdges[i][1]] - p[kEdges[i][0]]);
+    if (length2[i] > longest2) longest2 = length2[i];
+  }
+  constexpr double kLengthGap = 1 + 0x1p-40;
+  const bool separable = longest2 >= 0x1p-960 && longest2 <= std::numeric_limits<double>::max();
+  for (int i = 0; i < 6; ++i) {
+    if (separable && length2[i] * kLengthGap < longest2) continue;  // provably shorter: fails
+    const auto& e = kEdges[i];
     // Vertex k lies in the closed diametral ball of edge ij iff the angle ikj is
     // right or obtuse: exact.
     if (dot_sign(p[e[2]], p[e[0]], p[e[1]]) != Sign::Positive &&
         dot_sign(p[e[3]], p[e[0]], p[e[1]]) != Sign::Positive) {
-      best = std::min(best, 0.5 * norm(p[e[1]] - p[e[0]]));
+      best = std::min(best, 0.5 * std::sqrt(length2[i]));
     }
   }
   for (int l = 0; l < 4; ++l) {  // face opposite vertex l

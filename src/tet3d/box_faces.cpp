@@ -139,9 +139,13 @@ std::vector<GridPoint> square_ring(const FaceSquare& s, const CornerSet& corners
 
 void triangulate_box_face(const BoxKey<3>& key, int axis, bool upper, const CornerSet& corners,
                           std::vector<GridTriangle>& out) {
-  std::vector<FaceSquare> squares;
+  // Scratch kept per thread across calls (every empty box triangulates its
+  // six faces here; fresh vectors cost four allocations a face). Nothing
+  // survives a call but the capacity: both are cleared before use.
+  thread_local std::vector<FaceSquare> squares;
+  thread_local std::vector<GridPoint> ring;
+  squares.clear();
   face_squares(key, axis, upper, corners, squares);
-  std::vector<GridPoint> ring;
   for (const FaceSquare& sq : squares) {
     const GridPoint centre = sq.centre();
     square_ring(sq, corners, ring);

@@ -24,12 +24,26 @@ class PointBook {
  public:
   template <class MakeCoordinates>
   int id(const VertexKey& key, MakeCoordinates&& make) {
-    if (warps_ != nullptr && key.kind == VertexKind::Grid)
-      if (const Warp* w = warps_->find(key.p)) return add({VertexKind::Warped, key.p, {}, w->facet}, [&] { return w->at; });
-    return add(key, make);
+    const bool plain_grid = key.kind == VertexKind::Grid && key.facet == -1 && key.q == GridPoint{};
+    RecentGrid* recent = nullptr;
+    if (plain_grid) {
+      recent = &recent_[recent_slot(key.p)];
+      if (recent->id >= 0 && recent->p == key.p) return recent->id;
+    }
+    int n;
+    if (const Warp* w = warps_ != nullptr && key.kind == VertexKind::Grid ? warps_->find(key.p) : nullptr)
+      n = add({VertexKind::Warped, key.p, {}, w->facet}, [&] { return w->at; });
+    else
+      n = add(key, make);
+    if (recent != nullptr) *recent = {key.p, n};
+    return n;
   }
-  // The table grid keys resolve through (may be null: none).
-  void set_warps(const WarpTable* warps) { warps_ = warps; }
+  // The table grid keys resolve through (may be null: none). The table must
+  // not change while the book uses it (its answers are remembered).
+  void set_warps(const WarpTable* warps) {
+    warps_ = warps;
+    recent_.fill(RecentGrid{});
+  }
   const WarpTable* warps() const { return warps_; }
   int find(const VertexKey& key) const { return index_.find(key); }
   const Vec3& point(int id) const { return points_[static_cast<std::size_t>(id)]; }
@@ -41,9 +55,13 @@ class PointBook {
   std::vector<Vec3> take_points() {
     std::vector<Vec3> out = std::move(points_);
     points_.clear();
+    recent_.fill(RecentGrid{});
     return out;
   }
-  std::vector<VertexKey> take_keys() { return index_.take_keys(); }
+  std::vector<VertexKey> take_keys() {
+    recent_.fill(RecentGrid{});
+    return index_.take_keys();
+  }
 
  private:
   template <class MakeCoordinates>
@@ -52,6 +70,29 @@ class PointBook {
     if (fresh) points_.push_back(make());
     return n;
   }
+
+  // The ids of recently asked plain grid keys (Grid kind, no q, no facet),
+  // direct-mapped by grid point: a box's face triangles ask for each ring
+  // point two or three times and for a square's centre once per triangle
+  // (empty boxes: ~3/4 of the asks), and neighbouring boxes ask for their
+  // shared corners in turn. A hit returns the id the full path gave before:
+  // ids are never reassigned and the warp table is fixed, so the answer is
+  // the same, and no first use is skipped (a hit means the key is in the
+  // index), so the order of ids is unchanged.
+  struct RecentGrid {
+    GridPoint p;
+    int id = -1;  // -1: empty
+  };
+  static constexpr std::size_t kRecentSlots = 64;
+  static std::size_t recent_slot(const GridPoint& p) {
+    // The top bits of a product depend on all bits of the coordinates (grid
+    // coordinates are multiples of large powers of two: their low bits are 0).
+    const std::uint64_t x = static_cast<std::uint64_t>(p.f[0]) * 0x9E3779B97F4A7C15ull ^
+                            static_cast<std::uint64_t>(p.f[1]) * 0xC2B2AE3D27D4EB4Full ^
+                            static_cast<std::uint64_t>(p.f[2]) * 0x165667B19E3779F9ull;
+    return static_cast<std::size_t>(x >> 58);  // 6 bits: kRecentSlots
+  }
+  std::array<RecentGrid, kRecentSlots> recent_{};
 
   const WarpTable* warps_ = nullptr;
   // Open addressing, ids in order of first use (first_use_index.hpp, issue 5
