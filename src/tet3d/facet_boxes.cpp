@@ -321,9 +321,17 @@ class Assembler {
     job_box_ = job;
   }
   void collect_bad() { collect_ = true; }
+  // The largest tet_shape over the tetrahedra made so far (+infinity for one
+  // flat in floating point).
+  double worst_shape() const {
+    double worst = 0;
+    for (const auto& t : out_.mesh.tetrahedra)
+      worst = std::max(worst, tet_shape(book_.point(t[0]), book_.point(t[1]), book_.point(t[2]), book_.point(t[3])));
+    return worst;
+  }
   const std::vector<GridPoint>& bad() const { return bad_; }
-  // Per bad() point: bit a set when it lies on a face of the inverted
-  // tetrahedron's box with normal axis a.
+  // Per bad() point: bit a set when it lies on the low face of the inverted
+  // tetrahedron's box with normal axis a, bit 3 + a on its high face.
   const std::vector<std::uint8_t>& bad_axes() const { return bad_axes_; }
   // The jobs of the inverted tetrahedra (collect mode), in order, repeats allowed.
   const std::vector<std::int32_t>& bad_jobs() const { return bad_jobs_; }
@@ -567,16 +575,18 @@ class Assembler {
     std::vector<FaceSquare> squares;
     job_squares(tree_, corners_, job_box_, squares);
     // The job's box (a united vertex box spans 2x2x2 leaves): bad_axes_ gets
-    // bit a when g lies on one of its two faces along axis a (warp.cpp,
-    // `second_only`).
+    // bit a when g lies on its low face along axis a, bit 3 + a on its high
+    // face (warp.cpp, `second_only`).
     const BoxKey<3>& key = tree_.key(job_box_.leaf);
     const bool united = job_box_.kind == BoxKind::Vertex;
     const GridPoint lo = united ? united_lo(key, job_box_.block) : key_corner(key, 0);
     const std::int64_t side = (united ? 2 : 1) * key.fine_side();
     auto add = [&](const GridPoint& g) {
       std::uint8_t axes = 0;
-      for (std::size_t a = 0; a < 3; ++a)
-        if (g.f[a] == lo.f[a] || g.f[a] == lo.f[a] + side) axes = static_cast<std::uint8_t>(axes | (1u << a));
+      for (std::size_t a = 0; a < 3; ++a) {
+        if (g.f[a] == lo.f[a]) axes = static_cast<std::uint8_t>(axes | (1u << a));
+        if (g.f[a] == lo.f[a] + side) axes = static_cast<std::uint8_t>(axes | (8u << a));
+      }
       bad_.push_back(g);
       bad_axes_.push_back(axes);
     };
@@ -866,6 +876,36 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
       warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
                                 options.reflex_copies, edge_boxes, &second_only);
       release_free_heap();
+    }
+    // One decision per shared face (docs/ALGORITHM.md §12.5): a reported
+    // point keeps only the part of its second pass within the reporting
+    // box's faces, which leaves a face near a P edge unwarped. Its move out of
+    // the reporting box (away from that box's apex) helps that box but bends
+    // the face of the box across, whose own apex may lie near it (every-run
+    // seed 30: 1,833 -> 393; seed 100: 304 -> 675). Both tables give valid
+    // meshes when the trial inverts nothing (exact orient3d); the one with
+    // the better worst tetrahedron (tet_shape, only compared) is kept, the
+    // table without those moves on a tie. Runs without such a move are
+    // unchanged.
+    // The finished trial is dropped before the other table is built (the
+    // candidates and a mesh are each about half the peak memory); when that
+    // table loses, the final pass below remakes this mesh.
+    if (done && warps.out_of_face_left > 0) {
+      const double worst_before = done->worst_shape();
+      done.reset();
+      release_free_heap();
+      WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs),
+                                          &frozen, options.reflex_copies, edge_boxes, &second_only, true);
+      release_free_heap();
+      if (wider.out_of_face > 0) {
+        auto trial = std::make_unique<Assembler>(tree, corners, domain, &wider);
+        trial->collect_bad();
+        run_jobs(*trial, tree, jobs);
+        if (trial->bad().empty() && trial->worst_shape() < worst_before) {
+          warps = std::move(wider);
+          done = std::move(trial);
+        }
+      }
     }
   }
   if (!done) {

@@ -82,7 +82,8 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies,
                             std::span<const EdgeBoxBounds> edge_boxes,
-                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only) {
+                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only,
+                            bool out_of_face) {
   WarpTable table;
   std::map<int, std::unique_ptr<FacetPlane>> planes;
   auto plane_of = [&](int f) -> const FacetPlane& {
@@ -292,6 +293,20 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     for (const auto& e : best) total = total + e.second;
     return total;
   };
+  // Out-of-face moves of a reported point (`second_only` with `out_of_face`,
+  // docs/ALGORITHM.md §12.5): p lies on a face of the box whose tetrahedron
+  // inverted (the reporting box) with normal axis a, and its second pass has
+  // the component m along a. Kept only when it points out of the reporting
+  // box, so that box's face moves away from its own cone apex (p reported
+  // from boxes on both sides of the plane has no such direction). Whether
+  // the box across takes it well is decided by the caller (mesh_boxes
+  // compares the two meshes). Without `out_of_face` such components are
+  // dropped and the points counted (out_of_face_left), so the caller knows
+  // whether the other table would differ.
+  auto out_of_reporting_box = [](int a, std::uint8_t sides, double m) {
+    const bool low = (sides & (1u << a)) != 0, high = (sides & (8u << a)) != 0;
+    return m != 0 && low != high && (m > 0) == high;
+  };
   for (const WarpCandidate& c : candidates) {
     if (c.facets.empty() || !c.square_corners.empty()) continue;
     const Vec3 x0 = grid_coordinates(tree, c.p);
@@ -484,10 +499,22 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       const auto it = second_only->find(c.p);
       if (it != second_only->end()) {
         Vec3 z = second_pass(x0, facet, bisect, left);
-        const std::uint8_t axes = first && left == 0 ? it->second : std::uint8_t{7};
-        if ((axes & 1) != 0) z.x = x0.x;
-        if ((axes & 2) != 0) z.y = x0.y;
-        if ((axes & 4) != 0) z.z = x0.z;
+        const std::uint8_t sides = it->second;
+        const auto axes = static_cast<std::uint8_t>(first && left == 0 ? (sides & 7) | (sides >> 3) : 7);
+        int kept = 0, dropped = 0;
+        for (int a = 0; a < 3; ++a) {
+          if ((axes & (1u << a)) == 0) continue;
+          double& za = a == 0 ? z.x : a == 1 ? z.y : z.z;
+          const double xa = a == 0 ? x0.x : a == 1 ? x0.y : x0.z;
+          const bool outward = first && left == 0 && out_of_reporting_box(a, sides, za - xa);
+          if (outward && out_of_face) {
+            ++kept;
+            continue;
+          }
+          dropped += outward ? 1 : 0;
+          za = xa;
+        }
+        table.out_of_face_left += dropped > 0 ? 1 : 0;
         const bool same_point = z.x == x0.x && z.y == x0.y && z.z == x0.z;
         if (same_point || (frozen != nullptr && frozen->count(c.p) != 0) || !accept(z)) {
           ++table.frozen_left;
@@ -495,6 +522,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         }
         table.insert(c.p, Warp{facet, z});
         table.bisected += bisect ? 1 : 0;
+        table.out_of_face += kept > 0 ? 1 : 0;
         continue;
       }
     }

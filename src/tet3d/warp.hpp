@@ -114,12 +114,17 @@ struct EdgeBoxBounds {
 // face move gets its second pass alone from the prewarped point, without the
 // components along those axes (a face bent by the first pass past an edge-box
 // apex no longer freezes the point's move off its facet); otherwise, or when
-// nothing is left or a rule refuses it, it stays (frozen_left).
+// nothing is left or a rule refuses it, it stays (frozen_left). The entry's
+// bits: a for the reporting box's low face along axis a, 3 + a for its high
+// face. `out_of_face`: a component along such an axis that points out of the
+// reporting box is kept (counted in out_of_face); mesh_boxes takes that
+// table only when its mesh is valid and its worst tetrahedron better.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             std::span<const WarpCandidate> candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
                             bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {},
-                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr);
+                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr,
+                            bool out_of_face = false);
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {

@@ -84,6 +84,8 @@ class WarpTable {
   std::int64_t frozen_left = 0;   // left: in the caller's frozen set (their move inverted a tetrahedron)
   std::int64_t centres = 0;       // square centres carried with their corners (among size())
   std::int64_t shortened = 0;     // moved by 1/2..1/16 of a refused second-pass move (among size())
+  std::int64_t out_of_face = 0;   // reported points that kept a move out of the reporting box (among size())
+  std::int64_t out_of_face_left = 0;  // reported points whose move out of the reporting box was dropped
 
  private:
   struct CopyHash {
