@@ -9,8 +9,6 @@ namespace pqmesh::tet3d {
 
 namespace {
 
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-
 struct PiPoint {
   int id;
   bool on_facet;
@@ -20,7 +18,7 @@ struct PiPoint {
 // the one where F's normal has the larger component (F crosses S, so it is
 // not parallel to S's plane and this component is nonzero).
 int settle_axis(const FaceSquare& s, const FacetPlane& plane) {
-  return std::fabs(coord(plane.normal(), s.u)) >= std::fabs(coord(plane.normal(), s.v)) ? s.u : s.v;
+  return std::fabs(axis_coord(plane.normal(), s.u)) >= std::fabs(axis_coord(plane.normal(), s.v)) ? s.u : s.v;
 }
 
 }  // namespace
@@ -84,7 +82,7 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
   // Side length in world units: the square's lower corner to its (1, 0) corner.
   GridPoint c1 = s.lo;
   c1.f[s.u] += s.side;
-  const double side_len = coord(grid_coordinates(tree, c1), s.u) - coord(grid_coordinates(tree, s.lo), s.u);
+  const double side_len = axis_coord(grid_coordinates(tree, c1), s.u) - axis_coord(grid_coordinates(tree, s.lo), s.u);
   auto fan = [&](int apex, bool close_chord) {
     for (std::size_t j = 0; j + 1 < walk.size(); ++j) out.push_back({apex, walk[j].id, walk[j + 1].id});
     if (close_chord) out.push_back({apex, walk.back().id, walk.front().id});

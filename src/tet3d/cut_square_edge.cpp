@@ -12,9 +12,6 @@ namespace pqmesh::tet3d {
 
 namespace {
 
-double coord(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-double& coord(Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-
 Sign smax(Sign a, Sign b) { return static_cast<int>(a) >= static_cast<int>(b) ? a : b; }
 Sign smin(Sign a, Sign b) { return static_cast<int>(a) <= static_cast<int>(b) ? a : b; }
 
@@ -44,7 +41,7 @@ Vec3 wing(const Domain3& d, int facet, int a, int b) {
 
 // The in-plane axis of S along which a point of S is settled onto plane K.
 int settle_axis(const FaceSquare& s, const FacetPlane& k) {
-  return std::fabs(coord(k.normal(), s.u)) >= std::fabs(coord(k.normal(), s.v)) ? s.u : s.v;
+  return std::fabs(axis_coord(k.normal(), s.u)) >= std::fabs(axis_coord(k.normal(), s.v)) ? s.u : s.v;
 }
 
 // A point of the extended ring: a ring point or an on-dP crossing.
@@ -115,7 +112,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
   hi_corner.f[s.u] += s.side;
   hi_corner.f[s.v] += s.side;
   const Vec3 lo = grid_coordinates(tree, s.lo), hi = grid_coordinates(tree, hi_corner);
-  const double side_len = coord(hi, s.u) - coord(lo, s.u);
+  const double side_len = axis_coord(hi, s.u) - axis_coord(lo, s.u);
   const std::string where = "tet3d: edge " + std::to_string(cone.edge()) + ", square at centre (" +
                             std::to_string(centre.f[0]) + ", " + std::to_string(centre.f[1]) + ", " +
                             std::to_string(centre.f[2]) + ")";
@@ -124,12 +121,12 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
   // crossing's coordinate w* on in-plane axis w, by orient2d of the
   // projection that keeps (n, w): exact.
   const Vec3 ea = cone.a(), eb = cone.b();
-  const double plane_n = coord(lo, s.n);
-  const Sign dn = compare(coord(eb, s.n), coord(ea, s.n));
+  const double plane_n = axis_coord(lo, s.n);
+  const Sign dn = compare(axis_coord(eb, s.n), axis_coord(ea, s.n));
   auto rel = [&](double x, int w) {
     Vec3 p = C;
-    coord(p, s.n) = plane_n;
-    coord(p, w) = x;
+    axis_ref(p, s.n) = plane_n;
+    axis_ref(p, w) = x;
     const int drop = w == s.u ? s.v : s.u;
     const Sign o = orient2d_projected(ea, eb, p, drop);
     // drop v keeps (n, u): o = sign(dn)·sign(x - u*); drop u keeps (v, n): o = -sign(dn)·sign(x - v*).
@@ -137,10 +134,10 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
   };
   bool case_b = false;
   if (dn == Sign::Zero) {
-    if (coord(ea, s.n) == plane_n) throw InternalError(where + ": the edge lies in the square's plane");
+    if (axis_coord(ea, s.n) == plane_n) throw InternalError(where + ": the edge lies in the square's plane");
   } else {
-    const Sign u0 = rel(coord(lo, s.u), s.u), u1 = rel(coord(hi, s.u), s.u);
-    const Sign v0 = rel(coord(lo, s.v), s.v), v1 = rel(coord(hi, s.v), s.v);
+    const Sign u0 = rel(axis_coord(lo, s.u), s.u), u1 = rel(axis_coord(hi, s.u), s.u);
+    const Sign v0 = rel(axis_coord(lo, s.v), s.v), v1 = rel(axis_coord(hi, s.v), s.v);
     // rel(lo) = sign(lo - u*): u* inside the closed range iff rel(lo) <= 0 <= rel(hi).
     const bool in_u_closed = u0 != Sign::Positive && u1 != Sign::Negative;
     const bool in_v_closed = v0 != Sign::Positive && v1 != Sign::Negative;
@@ -253,7 +250,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       throw InternalError(where + ": Case B without one boundary run from one facet to the other");
     // v = E ∩ S: S's plane coordinate exact, the in-plane ones bracketed.
     auto bracket = [&](int w) {
-      double a = coord(lo, w), b = coord(hi, w);  // rel(a) < 0 < rel(b)
+      double a = axis_coord(lo, w), b = axis_coord(hi, w);  // rel(a) < 0 < rel(b)
       for (int it = 0; it < 2200; ++it) {
         const double mid = a + (b - a) / 2;
         if (mid == a || mid == b) break;
@@ -265,9 +262,9 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
     };
     const int v = book.id(VertexKey{VertexKind::EdgeCrossing, centre, {}, cone.edge()}, [&] {
       Vec3 p = C;
-      coord(p, s.n) = plane_n;
-      coord(p, s.u) = bracket(s.u);
-      coord(p, s.v) = bracket(s.v);
+      axis_ref(p, s.n) = plane_n;
+      axis_ref(p, s.u) = bracket(s.u);
+      axis_ref(p, s.v) = bracket(s.v);
       if (!within_ulp_of_segment(p, ea, eb)) throw InternalError(where + ": edge crossing not within an ulp of the edge");
       // After the first warping pass, E crosses the tilted square (§12.5).
       if (const auto w = warped_square_crossing(ea, eb, s, tree, warps)) return *w;

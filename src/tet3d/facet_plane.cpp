@@ -8,11 +8,6 @@
 
 namespace pqmesh::tet3d {
 
-namespace {
-double& at(Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-double at(const Vec3& p, int a) { return a == 0 ? p.x : (a == 1 ? p.y : p.z); }
-}  // namespace
-
 FacetPlane::FacetPlane(const Domain3& domain, int facet) : facet_(facet) {
   for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
     if (domain.facet_triangle_owner[t] != facet) continue;
@@ -36,15 +31,15 @@ Vec3 FacetPlane::settle(Vec3 p, int axis) const {
   if (within_ulp_of_plane(p, a_, b_, c_)) return p;
   const double inf = std::numeric_limits<double>::infinity();
   const Sign s0 = side(p);
-  const double na = at(n_, axis);
+  const double na = axis_coord(n_, axis);
   if (na == 0) throw InternalError("tet3d: cannot settle along an axis parallel to facet " + std::to_string(facet_));
   const double dir = ((s0 == Sign::Positive) == (na < 0)) ? 1.0 : -1.0;
-  const double x0 = at(p, axis);
+  const double x0 = axis_coord(p, axis);
   double near = x0, step = std::fabs(std::nextafter(x0, dir * inf) - x0);
   Vec3 q = p;
   for (int k = 0; k < 2100; ++k, step *= 2) {
     const double far = x0 + dir * step;
-    at(q, axis) = far;
+    axis_ref(q, axis) = far;
     const Sign s = side(q);
     if (s == Sign::Zero) return q;
     if (s != s0) {
@@ -53,14 +48,14 @@ Vec3 FacetPlane::settle(Vec3 p, int axis) const {
       for (int it = 0; it < 200; ++it) {
         const double mid = lo + (hi - lo) / 2;
         if (mid == lo || mid == hi) break;
-        at(q, axis) = mid;
+        axis_ref(q, axis) = mid;
         const Sign sm = side(q);
         if (sm == Sign::Zero) return q;
         (sm == s0 ? lo : hi) = mid;
       }
-      at(q, axis) = lo;
+      axis_ref(q, axis) = lo;
       if (within_ulp_of_plane(q, a_, b_, c_)) return q;
-      at(q, axis) = hi;
+      axis_ref(q, axis) = hi;
       if (within_ulp_of_plane(q, a_, b_, c_)) return q;
       break;
     }
@@ -77,23 +72,23 @@ Vec3 FacetPlane::crossing(Vec3 p, Vec3 q) const {
   int free_axis = 0;
   double best = -1;
   for (int a = 0; a < 3; ++a) {
-    const double pa = at(p, a), qa = at(q, a);
+    const double pa = axis_coord(p, a), qa = axis_coord(q, a);
     if (pa == qa) continue;  // kept exactly: the point stays on the segment's fixed planes
-    at(x, a) = pa + t * (qa - pa);
+    axis_ref(x, a) = pa + t * (qa - pa);
     // The axis along which the plane's crossing is best conditioned: for a
     // box edge the only one that varies; for a warped ring segment (all
     // three may vary) the one with the largest |Δ_a n_a|, never an axis
     // parallel to the plane (settle needs n_a != 0).
-    const double w = std::fabs((qa - pa) * at(n_, a));
+    const double w = std::fabs((qa - pa) * axis_coord(n_, a));
     if (w > best) {
       best = w;
       free_axis = a;
     }
   }
   x = settle(x, free_axis);
-  const double lo = std::fmin(at(p, free_axis), at(q, free_axis));
-  const double hi = std::fmax(at(p, free_axis), at(q, free_axis));
-  if (!(at(x, free_axis) > lo && at(x, free_axis) < hi))
+  const double lo = std::fmin(axis_coord(p, free_axis), axis_coord(q, free_axis));
+  const double hi = std::fmax(axis_coord(p, free_axis), axis_coord(q, free_axis));
+  if (!(axis_coord(x, free_axis) > lo && axis_coord(x, free_axis) < hi))
     throw InternalError("tet3d: crossing of facet " + std::to_string(facet_) +
                         " within an ulp of a segment end (a box vertex this close must be warped, §4.3)");
   return x;

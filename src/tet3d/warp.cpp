@@ -504,8 +504,8 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         int kept = 0, dropped = 0;
         for (int a = 0; a < 3; ++a) {
           if ((axes & (1u << a)) == 0) continue;
-          double& za = a == 0 ? z.x : a == 1 ? z.y : z.z;
-          const double xa = a == 0 ? x0.x : a == 1 ? x0.y : x0.z;
+          double& za = axis_ref(z, a);
+          const double xa = axis_coord(x0, a);
           const bool outward = first && left == 0 && out_of_reporting_box(a, sides, za - xa);
           if (outward && out_of_face) {
             ++kept;
