@@ -14,14 +14,11 @@ struct PiPoint {
   bool on_facet;
 };
 
-// The in-plane axis of S along which a point of S is moved onto F's plane:
-// the one where F's normal has the larger component (F crosses S, so it is
-// not parallel to S's plane and this component is nonzero).
+}  // namespace
+
 int settle_axis(const FaceSquare& s, const FacetPlane& plane) {
   return std::fabs(axis_coord(plane.normal(), s.u)) >= std::fabs(axis_coord(plane.normal(), s.v)) ? s.u : s.v;
 }
-
-}  // namespace
 
 CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, const OctTree& tree,
                                const FacetPlane& plane, PointBook& book, std::vector<std::array<int, 3>>& out,

@@ -44,4 +44,9 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
                                const FacetPlane& plane, PointBook& book, std::vector<std::array<int, 3>>& out,
                                const WarpTable* warps = nullptr);
 
+// The in-plane axis of S along which a point of S is moved (settled) onto the
+// plane's: the one where the plane's normal has the larger component (a plane
+// crossing S is not parallel to S's plane, so that component is nonzero).
+int settle_axis(const FaceSquare& s, const FacetPlane& plane);
+
 }  // namespace pqmesh::tet3d

@@ -39,11 +39,6 @@ Vec3 wing(const Domain3& d, int facet, int a, int b) {
   throw InternalError("tet3d: facet " + std::to_string(facet) + " has no triangle on its edge");
 }
 
-// The in-plane axis of S along which a point of S is settled onto plane K.
-int settle_axis(const FaceSquare& s, const FacetPlane& k) {
-  return std::fabs(axis_coord(k.normal(), s.u)) >= std::fabs(axis_coord(k.normal(), s.v)) ? s.u : s.v;
-}
-
 // A point of the extended ring: a ring point or an on-dP crossing.
 struct RPoint {
   Vec3 xyz;
