@@ -21,10 +21,10 @@
 #include "tet3d/cut_square.hpp"
 #include "tet3d/edge_point.hpp"
 #include "tet3d/facet_plane.hpp"
-#include "tet3d/first_use_index.hpp"
 #include "tet3d/tet_shape.hpp"
 #include "tet3d/point_book.hpp"
 #include "tet3d/warp.hpp"
+#include "tet3d/warp_candidates.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -729,87 +729,11 @@ void run_jobs(Assembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
 
 namespace {
 
-// Every ring point of every job's squares, with the facets of the boxes
-// using it (warp.hpp), then the square centres, in job order: deterministic,
-// so a second call gives the same list.
-std::vector<WarpCandidate> warp_candidates(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                                           std::span<const BoxJob> jobs) {
-  PointBook scratch;
-  const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
-  std::vector<WarpCandidate> candidates;
-  // Point -> its candidate (centre) number: FirstUseIndex ids count first
-  // insertions, so they are the positions in candidates (centres).
-  FirstUseIndex<GridPoint, GridPointHash> index, centre_index;
-  std::vector<WarpCandidate> centres;
-  std::vector<FaceSquare> squares;
-  std::vector<GridPoint> ring;  // one square's ring, reused
-  for (const BoxJob& j : jobs) {
-    squares.clear();
-    job_squares(tree, corners, j, squares);
-    const BoxFaces faces = job_faces(faces_only, j);
-    const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
-    // The job's box (a vertex job's united box) for its whole edges.
-    const BoxKey<3>& jkey = tree.key(j.leaf);
-    const GridPoint box_lo = j.kind == BoxKind::Vertex ? united_lo(jkey, j.block) : key_corner(jkey, 0);
-    GridPoint box_hi = box_lo;
-    for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
-    for (const FaceSquare& s : squares) {
-      // The square's centre, carried with its four corners (warp.hpp).
-      // A final square's centre is in no CornerSet point (leaf corners and
-      // the cell corners of united boxes, box_faces.cpp), so never a ring
-      // point.
-      const auto [cid, cfresh] = centre_index.insert(s.centre());
-      if (cfresh) {
-        GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
-        c1.f[static_cast<std::size_t>(s.u)] += s.side;
-        c2.f[static_cast<std::size_t>(s.u)] += s.side;
-        c2.f[static_cast<std::size_t>(s.v)] += s.side;
-        c3.f[static_cast<std::size_t>(s.v)] += s.side;
-        centres.push_back({s.centre(), {}, {}, {s.lo, c1, c2, c3}, -1, {}});
-      }
-      for (const int f : faces.facets) {
-        std::vector<int>& cf = centres[static_cast<std::size_t>(cid)].facets;
-        if (std::find(cf.begin(), cf.end(), f) == cf.end()) cf.push_back(f);
-      }
-      square_ring(s, corners, ring);
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const GridPoint& p = ring[i];
-        const auto [id, fresh] = index.insert(p);
-        if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
-        WarpCandidate& c = candidates[static_cast<std::size_t>(id)];
-        c.level = std::max(c.level, level);
-        for (const int f : faces.facets)
-          if (std::find(c.facets.begin(), c.facets.end(), f) == c.facets.end()) c.facets.push_back(f);
-        for (const GridPoint& q : {ring[(i + 1) % ring.size()], ring[(i + ring.size() - 1) % ring.size()]})
-          if (std::find(c.neighbours.begin(), c.neighbours.end(), q) == c.neighbours.end()) c.neighbours.push_back(q);
-        // p lies on the box edge along `axis` when its other two
-        // coordinates are box bounds.
-        auto on_bound = [&](int a) {
-          const auto k = static_cast<std::size_t>(a);
-          return p.f[k] == box_lo.f[k] || p.f[k] == box_hi.f[k];
-        };
-        for (int axis = 0; axis < 3; ++axis) {
-          if (!on_bound((axis + 1) % 3) || !on_bound((axis + 2) % 3)) continue;
-          std::pair<GridPoint, GridPoint> edge{p, p};
-          edge.first.f[static_cast<std::size_t>(axis)] = box_lo.f[static_cast<std::size_t>(axis)];
-          edge.second.f[static_cast<std::size_t>(axis)] = box_hi.f[static_cast<std::size_t>(axis)];
-          if (std::find(c.box_edges.begin(), c.box_edges.end(), edge) == c.box_edges.end())
-            c.box_edges.push_back(edge);
-        }
-      }
-    }
-  }
-  for (WarpCandidate& c : centres) {
-    if (index.find(c.p) >= 0) throw InternalError("tet3d: a square centre is a ring point");
-    candidates.push_back(std::move(c));
-  }
-  return candidates;
-}
-
-// The candidates are hundreds of thousands of small blocks (their vectors)
-// freed together; glibc keeps such memory in its heap, and the pass after
-// them allocates its tables as fresh mappings, so the freed pages would count
-// twice in the peak. They go back to the system here (glibc only; elsewhere
+// The candidate stage's free blocks (the candidate list is a few large
+// arrays since warp_candidates.hpp, but the square scratch and the hash
+// nodes of the table passes are small blocks) stay in glibc's heap, and the
+// pass after them allocates its tables as fresh mappings, so the freed pages
+// would count twice in the peak (plate_holes without the trim: +3.4 MB). They go back to the system here (glibc only; elsewhere
 // a no-op).
 void release_free_heap() {
 #if defined(__GLIBC__)
@@ -837,7 +761,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     // vertex centring keep them apart, not done here): the moved points of
     // every inverted tetrahedron are frozen (left in place, counted) and the
     // table rebuilt, until no tetrahedron inverts. Deterministic. The
-    // candidates (about half the peak memory of a run) are not kept through
+    // candidates (plate_holes: ~36 MB of a 130 MB peak) are not kept through
     // the trial passes: a rebuild makes them again (same list).
     std::unordered_set<GridPoint, GridPointHash> frozen;
     std::unordered_map<GridPoint, std::uint8_t, GridPointHash> second_only;
@@ -888,7 +812,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     // table without those moves on a tie. Runs without such a move are
     // unchanged.
     // The finished trial is dropped before the other table is built (the
-    // candidates and a mesh are each about half the peak memory); when that
+    // candidates and a mesh are a large part of the peak memory); when that
     // table loses, the final pass below remakes this mesh.
     if (done && warps.out_of_face_left > 0) {
       const double worst_before = done->worst_shape();

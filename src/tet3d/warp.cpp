@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -79,7 +80,7 @@ double facet_distance(const Domain3& domain, int facet, Vec3 x) {
 }
 
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                            std::span<const WarpCandidate> candidates,
+                            const WarpCandidates& candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen, bool reflex_copies,
                             std::span<const EdgeBoxBounds> edge_boxes,
                             const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only,
@@ -102,7 +103,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     const auto& f = domain.edges[e].facets;
     pair_edges[{std::min(f[0], f[1]), std::max(f[0], f[1])}].push_back(static_cast<int>(e));
   }
-  auto edges_between = [&](const std::vector<int>& facets) {
+  auto edges_between = [&](std::span<const int> facets) {
     std::vector<int> out;
     for (std::size_t i = 0; i < facets.size(); ++i)
       for (std::size_t j = i + 1; j < facets.size(); ++j) {
@@ -340,7 +341,9 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // pieces near E bent the box edge, the apex's cones onto the far
     // squares inverted and the rebuild loop froze the whole edge: bounded
     // random seed 122, docs/ALGORITHM.md §12.5).
-    std::vector<std::pair<GridPoint, GridPoint>> segments = c.box_edges;
+    std::vector<std::pair<GridPoint, GridPoint>> segments;
+    segments.reserve(c.box_edges.size() + c.neighbours.size());
+    for (const BoxEdgeSpan& be : c.box_edges) segments.push_back(be.ends(c.p));
     for (const GridPoint& w : c.neighbours) segments.push_back({std::min(c.p, w), std::max(c.p, w)});
     for (const int e : edges) {
       const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
@@ -688,21 +691,19 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
 
 WarpTable warp_facet_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                               std::span<const FacetLeaf> boxes) {
-  std::vector<WarpCandidate> candidates;
-  std::unordered_map<GridPoint, std::size_t, GridPointHash> index;
+  WarpCandidateBuilder builder;
   std::vector<FaceSquare> squares;
+  std::vector<GridPoint> ring;
   for (const FacetLeaf& fb : boxes) {
     squares.clear();
     for (int axis = 0; axis < 3; ++axis)
       for (const bool upper : {false, true}) face_squares(tree.key(fb.leaf), axis, upper, corners, squares);
-    for (const FaceSquare& s : squares)
-      for (const GridPoint& p : square_ring(s, corners)) {
-        const auto [it, fresh] = index.try_emplace(p, candidates.size());
-        if (fresh) candidates.push_back({p, {}, {}, {}, -1, {}});
-        std::vector<int>& fs = candidates[it->second].facets;
-        if (std::find(fs.begin(), fs.end(), fb.facet) == fs.end()) fs.push_back(fb.facet);
-      }
+    for (const FaceSquare& s : squares) {
+      square_ring(s, corners, ring);
+      builder.add_points(ring, std::span<const int>(&fb.facet, 1));
+    }
   }
+  const WarpCandidates candidates = builder.finish();
   return warp_box_vertices(tree, corners, domain, candidates);
 }
 

@@ -74,29 +74,12 @@
 #include "pqmesh/domain.hpp"
 #include "tet3d/box_faces.hpp"
 #include "tet3d/point_book.hpp"
+#include "tet3d/warp_candidates.hpp"
 #include "tet3d/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 
-// A box vertex, the facets of the boxes using it and its neighbours along
-// the rings of the squares using it (no repeats).
-// Or the centre of a face square (Case A / C2 / D2 centre, §4.4), with the
-// square's four corners: it is carried with them (see above).
-struct WarpCandidate {
-  GridPoint p;
-  std::vector<int> facets;
-  std::vector<GridPoint> neighbours;
-  std::vector<GridPoint> square_corners;  // non-empty: p is this square's centre
-  // The deepest level of a box whose faces use p (a vertex job's united box
-  // counts one level up); with CornerSet::finest_level it gives §4.3's h,
-  // the smallest box containing p (a united box's ring point need not be a
-  // leaf corner).
-  std::int32_t level = -1;
-  // The whole box edges through p of the boxes using it, (low end, high
-  // end) along one axis (§4.3's first pass looks at box edges, not at the
-  // pieces between ring points: docs/ALGORITHM.md §12.5).
-  std::vector<std::pair<GridPoint, GridPoint>> box_edges;
-};
+// The candidates (WarpCandidate, WarpCandidates): warp_candidates.hpp.
 // An edge box (§4.5.3): its grid bounds and its P edge.
 struct EdgeBoxBounds {
   GridPoint lo, hi;
@@ -120,7 +103,7 @@ struct EdgeBoxBounds {
 // reporting box is kept (counted in out_of_face); mesh_boxes takes that
 // table only when its mesh is valid and its worst tetrahedron better.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                            std::span<const WarpCandidate> candidates,
+                            const WarpCandidates& candidates,
                             const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
                             bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {},
                             const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr,

@@ -99,15 +99,15 @@ TEST(ReflexSlotCopies, OneCopyPerFacetEachMovedOffItsOwnFacet) {
   ASSERT_EQ(pg.side(x0), Sign::Positive);
   ASSERT_LE(facet_distance(d, f, x0), 1.0 / 16);
   ASSERT_LE(facet_distance(d, g, x0), 1.0 / 16);
-  const std::vector<WarpCandidate> cand = {{v, {f, g}, {wx, wy}, {}, 0, {}}};
+  const std::vector<WarpCandidateRecord> cand = {{v, {f, g}, {wx, wy}, {}, 0, {}}};
 
   // Without copies (the behaviour before them): v stays, counted.
-  const WarpTable before = warp_box_vertices(t, corners, d, cand, nullptr, false);
+  const WarpTable before = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, false);
   EXPECT_EQ(before.reflex_left, 1);
   EXPECT_EQ(before.find(v), nullptr);
   EXPECT_EQ(before.copy_count(), 0u);
 
-  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   EXPECT_EQ(w.reflex_left, 0);
   EXPECT_EQ(w.reflex_copied, 1);
   EXPECT_EQ(w.find(v), nullptr) << "a slot vertex has copies, no single entry";

@@ -58,7 +58,7 @@ TEST(WarpFaceFraction, TranslationStopsShortOfEdgeLine) {
   }
   ASSERT_GE(edge, 0);
   const GridPoint c000 = corner_of(t, 0), c010 = corner_of(t, 2), c001 = corner_of(t, 4), c011 = corner_of(t, 6);
-  const std::vector<WarpCandidate> cand = {
+  const std::vector<WarpCandidateRecord> cand = {
       {c000, {f, g}, {c001, corner_of(t, 1)}, {}, 0, {{c000, c001}}},
       {c001, {f, g}, {c000, corner_of(t, 5)}, {}, 0, {{c000, c001}}},
       {c010, {f, g}, {c011, corner_of(t, 3)}, {}, 0, {{c010, c011}}},
@@ -77,7 +77,7 @@ TEST(WarpFaceFraction, TranslationStopsShortOfEdgeLine) {
     EXPECT_EQ(orient3d(a, b, p + m, q + m) == before, len < 3.0 / 64) << len;
   }
   const std::vector<EdgeBoxBounds> boxes = {{corner_of(t, 0), corner_of(t, 7), edge}};
-  const WarpTable w = warp_box_vertices(t, corners, d, cand, nullptr, true, boxes);
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, true, boxes);
   for (const GridPoint& pt : {c000, c001, c010, c011}) {
     const Warp* moved = w.find(pt);
     ASSERT_NE(moved, nullptr);

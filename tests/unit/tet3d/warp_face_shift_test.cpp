@@ -51,17 +51,17 @@ TEST(WarpFaceShift, EdgeBoxFaceThroughACloseBoxEdgeIsTranslated) {
   const GridPoint c000 = corner_of(t, 0), c010 = corner_of(t, 2), c001 = corner_of(t, 4), c011 = corner_of(t, 6);
   GridPoint m = c000;
   m.f[1] += t.key(0).fine_side() / 2;
-  const std::vector<WarpCandidate> cand = {
+  const std::vector<WarpCandidateRecord> cand = {
       {c000, {f, g}, {c001, corner_of(t, 1), m}, {}, 0, {{c000, c001}}},
       {c001, {f, g}, {c000, corner_of(t, 5), c011}, {}, 0, {{c000, c001}}},
       {c010, {f, g}, {c011, corner_of(t, 3), m}, {}, 0, {{c010, c011}}},
       {c011, {f, g}, {c010, corner_of(t, 7), c001}, {}, 0, {{c010, c011}}},
       {m, {f, g}, {c000, c010}, {}, 0, {}},
   };
-  const WarpTable plain = warp_box_vertices(t, corners, d, cand);
+  const WarpTable plain = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   EXPECT_EQ(plain.find(m), nullptr);
   const std::vector<EdgeBoxBounds> boxes = {{corner_of(t, 0), corner_of(t, 7), edge}};
-  const WarpTable w = warp_box_vertices(t, corners, d, cand, nullptr, true, boxes);
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, true, boxes);
   for (const GridPoint& p : {c000, c001, c010, c011, m}) {
     const Warp* moved = w.find(p);
     ASSERT_NE(moved, nullptr);

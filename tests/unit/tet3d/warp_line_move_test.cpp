@@ -47,8 +47,8 @@ TEST(WarpLineMove, CornerNearFMovesAlongItsCrossedSegment) {
   const Domain3 d = make_domain(test::prism_xz({{9.0 / 64, 1.0 / 64}, {0.5, 2}, {-2, 2}, {-2, -1}, {-1, -1.0 / 8}}, -1, 2));
   const int f = 4, g = 0;
   const GridPoint v = corner_of(t, 0), wx = corner_of(t, 1);
-  const std::vector<WarpCandidate> cand = {{v, {f, g}, {wx, corner_of(t, 2), corner_of(t, 4)}, {}, 0, {}}};
-  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  const std::vector<WarpCandidateRecord> cand = {{v, {f, g}, {wx, corner_of(t, 2), corner_of(t, 4)}, {}, 0, {}}};
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   const Warp* moved = w.find(v);
   ASSERT_NE(moved, nullptr);
   EXPECT_EQ(moved->at.x, -1.0 / 16);

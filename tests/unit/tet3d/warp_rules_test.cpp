@@ -37,11 +37,11 @@ GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
 
 // Candidates: the four corners of the bottom face (ring neighbours along the
 // square) with every facet, and the square's centre.
-std::vector<WarpCandidate> bottom_candidates(const OctTree& t, const FaceSquare& s, int facets) {
+std::vector<WarpCandidateRecord> bottom_candidates(const OctTree& t, const FaceSquare& s, int facets) {
   std::vector<int> all;
   for (int f = 0; f < facets; ++f) all.push_back(f);
   const GridPoint c[4] = {corner_of(t, 0), corner_of(t, 1), corner_of(t, 3), corner_of(t, 2)};  // around the face
-  std::vector<WarpCandidate> out;
+  std::vector<WarpCandidateRecord> out;
   for (int i = 0; i < 4; ++i) out.push_back({c[i], all, {c[(i + 1) % 4], c[(i + 3) % 4]}, {}, 0, {}});
   out.push_back({s.centre(), all, {}, {c[0], c[1], c[2], c[3]}, -1, {}});
   return out;
@@ -56,8 +56,8 @@ TEST(WarpRules, SquareCentreMovesWithItsCorners) {
   const CornerSet corners(t, t.leaves());
   const Domain3 d = make_domain(test::box({-1, -1, 0.01}, {2, 2, 2}));
   const FaceSquare s = bottom_square(t, corners);
-  const std::vector<WarpCandidate> cand = bottom_candidates(t, s, 6);
-  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  const std::vector<WarpCandidateRecord> cand = bottom_candidates(t, s, 6);
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   for (int i = 0; i < 4; ++i) {
     const Warp* c = w.find(cand[static_cast<std::size_t>(i)].p);
     ASSERT_NE(c, nullptr) << "corner " << i;
@@ -79,7 +79,7 @@ TEST(WarpRules, SquareCentreOnAFacetPlaneStays) {
   const CornerSet corners(t, t.leaves());
   const Domain3 d = make_domain(test::box({0.5, -1, 0.01}, {2, 2, 2}));
   const FaceSquare s = bottom_square(t, corners);
-  const WarpTable w = warp_box_vertices(t, corners, d, bottom_candidates(t, s, 6));
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(bottom_candidates(t, s, 6)));
   EXPECT_NE(w.find(corner_of(t, 1)), nullptr);
   EXPECT_EQ(w.find(s.centre()), nullptr);
   EXPECT_EQ(w.centres, 0);
@@ -108,9 +108,9 @@ TEST(WarpRules, RefusedMoveIsShortened) {
   const int f = facet_at(d, {0, 0.5, 0.01}), g = facet_at(d, {5.5, 0.5, -0.03});
   ASSERT_GE(f, 0);
   ASSERT_GE(g, 0);
-  const std::vector<WarpCandidate> cand = {
+  const std::vector<WarpCandidateRecord> cand = {
       {corner_of(t, 0), {f, g}, {corner_of(t, 1), corner_of(t, 2)}, {}, 0, {}}};
-  const WarpTable w = warp_box_vertices(t, corners, d, cand);
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   const Warp* v = w.find(corner_of(t, 0));
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->at.x, 0.0);
@@ -177,10 +177,10 @@ TEST(WarpRules, FirstPassLooksAtWholeBoxEdges) {
   GridPoint mid = v;
   mid.f[2] = (v.f[2] + below.f[2]) / 2;
   const std::vector<GridPoint> ring = {mid, corner_of(t, 5)};
-  const std::vector<WarpCandidate> segments_only = {{v, {f, g}, ring, {}, 0, {}}};
-  EXPECT_EQ(warp_box_vertices(t, corners, d, segments_only).find(v), nullptr);
-  const std::vector<WarpCandidate> with_edge = {{v, {f, g}, ring, {}, 0, {{below, v}}}};
-  const WarpTable w = warp_box_vertices(t, corners, d, with_edge);
+  const std::vector<WarpCandidateRecord> segments_only = {{v, {f, g}, ring, {}, 0, {}}};
+  EXPECT_EQ(warp_box_vertices(t, corners, d, make_warp_candidates(segments_only)).find(v), nullptr);
+  const std::vector<WarpCandidateRecord> with_edge = {{v, {f, g}, ring, {}, 0, {{below, v}}}};
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(with_edge));
   const Warp* moved = w.find(v);
   ASSERT_NE(moved, nullptr);
   EXPECT_EQ(moved->at.x, -1.0 / 8);
