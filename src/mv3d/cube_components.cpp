@@ -271,6 +271,18 @@ std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, cons
   return out;
 }
 
+std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates,
+                                   const std::vector<int>& known) {
+  EdgeLines edge_lines(cube);
+  std::vector<int> out;
+  for (const int t : candidates)
+    if (std::binary_search(known.begin(), known.end(), t) || triangle_meets(domain, t, cube, edge_lines))
+      out.push_back(t);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube) {
   std::vector<int> all(domain.facet_triangles.size());
   std::iota(all.begin(), all.end(), 0);
@@ -298,6 +310,11 @@ bool corner0_in(const Domain3& domain, const Cube& cube) {
 bool corner0_in_from(const Domain3& domain, const Cube& inner, const Cube& outer, bool outer_corner0_in,
                      std::span<const int> outer_tris) {
   return walk_status(domain, outer_tris, corner_point(outer, 0), outer_corner0_in, corner_point(inner, 0));
+}
+
+bool corner0_in_walk(const Domain3& domain, const Cube& to, const Cube& from, bool from_corner0_in,
+                     std::span<const int> tris) {
+  return walk_status(domain, tris, corner_point(from, 0), from_corner0_in, corner_point(to, 0));
 }
 
 CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fast_path, std::span<const Vec3> marks) {

@@ -79,6 +79,10 @@ struct CubeComponents {
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube);
 // The same, restricted to candidates (e.g. the parent box's list).
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates);
+// The same when `known` (sorted, a subset of candidates) is known to meet the
+// box, e.g. the triangles meeting a box inside it: those are not tested again.
+std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates,
+                                   const std::vector<int>& known);
 
 // What a caller that already knows the neighbourhood of C hands down (issue 4
 // item 7: candidate lists passed down the tree, ex(child) ⊂ ex(parent)), so
@@ -97,6 +101,13 @@ bool corner0_in(const Domain3& domain, const Cube& cube);
 // triangle meeting outer's C_e. Cost O(|outer_tris|).
 bool corner0_in_from(const Domain3& domain, const Cube& inner, const Cube& outer, bool outer_corner0_in,
                      std::span<const int> outer_tris);
+// The same between any two boxes `from`, `to` (corner 0 of from's C_e known
+// to be in P or not): the walk goes from corner to corner along x, y, z, so it
+// stays in any box holding both corners; `tris` must hold every facet
+// triangle meeting such a box's C_e (e.g. two children of one parent, with the
+// parent's list). Cost O(|tris|) per coordinate that differs.
+bool corner0_in_walk(const Domain3& domain, const Cube& to, const Cube& from, bool from_corner0_in,
+                     std::span<const int> tris);
 
 // Components of P ∩ C. Cost: O(c) to select the m triangles meeting C among
 // the c candidates, then, off the fast path, O(m k) for the k probe lines

@@ -53,6 +53,40 @@ bool share(const std::vector<int>& a, const std::vector<int>& b) {
   return false;
 }
 
+// P ∧ n is the whole closed cube (C_e ⊂ P): no facet triangle meets it.
+bool whole_cube(const NodeData3& n) { return n.has_component && n.rep_triangle < 0; }
+
+// P ∩ n (closed cube) is connected, so it is P ∧ n. Children of a cube inside
+// P and the shared kInterior record leave cube_single unset; they are whole cubes.
+bool connected(const NodeData3& n) { return n.has_component && (n.cube_single || n.rep_triangle < 0); }
+
+// The closed boxes intersect (exact: comparisons of doubles).
+bool touch(const Cube& a, const Cube& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+         b.lo.z <= a.hi.z;
+}
+
+// Is some facet triangle known to meet both P ∧ a and P ∧ b? Known triangles
+// of P ∧ n: its rep_triangle, and when P ∩ n is connected (cube_single) every
+// triangle of cube_tris (each meets the closed cube, so lies in its one
+// component). A sufficient condition only: false says nothing.
+bool share_triangle(const NodeData3& a, const NodeData3& b) {
+  if (a.rep_triangle < 0 || b.rep_triangle < 0) return false;  // a whole cube meets no triangle
+  if (a.rep_triangle == b.rep_triangle) return true;
+  if (a.cube_single && contains(a.cube_tris, b.rep_triangle)) return true;
+  if (b.cube_single && contains(b.cube_tris, a.rep_triangle)) return true;
+  if (!a.cube_single || !b.cube_single) return false;
+  // Both connected: any common triangle of the sorted lists.
+  auto i = a.cube_tris.begin();
+  auto j = b.cube_tris.begin();
+  while (i != a.cube_tris.end() && j != b.cube_tris.end()) {
+    if (*i == *j) return true;
+    if (*i < *j) ++i;
+    else ++j;
+  }
+  return false;
+}
+
 }  // namespace
 
 OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
@@ -181,14 +215,23 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
   std::vector<std::vector<int>> child_tris(OctTree::kChildren);
   std::vector<Vec3> marks;
   std::vector<std::size_t> mark_of(OctTree::kChildren, 0);
-  // Corner 0 of each child's shifted cube and extended box, from the
-  // parent's by walks inside the parent's (ex(child) ⊂ ex(parent)).
+  // Corner 0 of each child's shifted cube and extended box, by walks inside
+  // the parent's (ex(child) ⊂ ex(parent)): the first child from the parent,
+  // then each child from the previous one in Gray-code order (one coordinate
+  // differs: one line per step instead of up to three from the parent's corner).
   const Cube pcube = cube(parent), pex = ex_cube(parent);
   std::array<bool, OctTree::kChildren> corner_in{}, ex_corner_in{};
-  for (int k = 0; k < OctTree::kChildren; ++k) {
+  int prev = -1;
+  for (int i = 0; i < OctTree::kChildren; ++i) {
+    const int k = i ^ (i >> 1);
     const auto ku = static_cast<std::size_t>(k);
-    corner_in[ku] = corner0_in_from(domain_, cube(first_child + k), pcube, pd.cube_corner0_in, pd.cube_tris);
-    ex_corner_in[ku] = corner0_in_from(domain_, ex_cube(first_child + k), pex, pd.ex_corner0_in, pd.ex_tris);
+    const Cube from = prev < 0 ? pcube : cube(first_child + prev);
+    const Cube ex_from = prev < 0 ? pex : ex_cube(first_child + prev);
+    const bool in = prev < 0 ? pd.cube_corner0_in : corner_in[static_cast<std::size_t>(prev)];
+    const bool ex_in = prev < 0 ? pd.ex_corner0_in : ex_corner_in[static_cast<std::size_t>(prev)];
+    corner_in[ku] = corner0_in_walk(domain_, cube(first_child + k), from, in, pd.cube_tris);
+    ex_corner_in[ku] = corner0_in_walk(domain_, ex_cube(first_child + k), ex_from, ex_in, pd.ex_tris);
+    prev = k;
   }
   if (!interior && pd.has_component) {
     for (int k = 0; k < OctTree::kChildren; ++k) {
@@ -255,7 +298,7 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
       continue;
     }
     cd.cube_tris = std::move(child_tris[static_cast<std::size_t>(k)]);
-    cd.ex_tris = triangles_meeting(domain_, ex, pd.ex_tris);
+    cd.ex_tris = triangles_meeting(domain_, ex, pd.ex_tris, cd.cube_tris);  // child ⊂ ex(child)
     const CubeComponents& sc = child_cc[static_cast<std::size_t>(k)];
     std::vector<int> mine, rep;  // components of P ∩ child inside P ∧ parent, and their triangles
     for (std::size_t ci = 0; ci < sc.components.size(); ++ci) {
@@ -319,6 +362,15 @@ bool OctreeBuilder::balance_adjacent(std::int32_t big, std::int32_t small) const
   const NodeData3& ds = data(small);
   if (!db.has_component || !ds.has_component) return false;
   if (db.ex_tris.empty()) return true;  // ex(big) lies in P: one component
+  // A facet triangle meeting both P ∧ big and P ∧ small meets the shifted
+  // ex(big) (it holds both shifted cubes) in one convex piece, which lies in
+  // one component of P ∩ ex(big): the two share it. No components() needed.
+  if (share_triangle(db, ds)) return true;
+  // One of the two is a whole cube inside P and the other meets P in one
+  // component: a point common to both closed cubes lies in P, hence in both
+  // P ∧ big and P ∧ small, which therefore touch inside ex(big).
+  if (((whole_cube(db) && connected(ds)) || (connected(db) && whole_cube(ds))) && touch(cube(big), cube(small)))
+    return true;
   const CubeComponents& cached = cached_extended(big);
   // P ∩ ex(big) connected: it holds P ∧ small (small ⊂ ex(big)).
   if (cached.components.size() == 1) return true;

@@ -39,8 +39,10 @@
 // cut by protected boxes; instead a face sharing a vertex with the apex
 // interferes only if it meets P ∧ b itself (the 2D edge rule).
 // Cost: dominated by components() (exact, double filters before GMP): one per
-// child meeting ∂P per split, one per extended box (cached per node), and one
-// per balance-adjacency query involving a box inside P. Each looks only at
+// child meeting ∂P per split, one per extended box that a crowding test or an
+// undecided balance-adjacency query needs (cached per node), and one per
+// undecided balance-adjacency query involving a box inside P (balance_adjacent
+// first tries the shared-triangle and whole-cube rules, octree_builder.cpp). Each looks only at
 // the candidate triangles handed down the tree (cube_tris, ex_tris) and
 // starts from the status of corner 0 derived from the parent's, so a box
 // costs O(candidates), independent of the number of facet triangles.
@@ -141,7 +143,8 @@ class OctreeBuilder {
   std::vector<std::int32_t> leaves_by_id() const;
   // The united box of vertex v (2x2x2 block, §4.1.3); lo > hi if v was not centred.
   const Cube& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }
-  // Thesis §4.1.1: balance-adjacency of neighbours big, small (h(big) >= h(small)).
+  // Thesis §4.1.1: balance-adjacency of neighbours big, small (h(big) >= h(small));
+  // small must lie in ex(big) (a neighbour, or a box of big's united vertex box).
   bool balance_adjacent(std::int32_t big, std::int32_t small) const;
   ExtendedFaces3 extended_faces(std::int32_t node) const;
   // The phase whose split (or balancing) created the node (Root for the root).

@@ -131,6 +131,8 @@ void compare_hinted(const Domain3& d, const std::string& name, std::uint64_t see
                                    : cube_of({cell(lo.x) - 2 * side, cell(lo.y) - 2 * side, cell(lo.z) - 2 * side}, 5 * side);
     const std::vector<int> ptris = triangles_meeting(d, parent);
     const bool pin = corner0_in(d, parent);
+    Cube prev = parent;
+    bool prev_in = pin;
     for (int k = 0; k < 8; ++k) {
       // An octant of the parent, or (odd i) a box of random size at a random
       // dyadic spot inside it, as ex(child) inside ex(parent).
@@ -144,6 +146,14 @@ void compare_hinted(const Domain3& d, const std::string& name, std::uint64_t see
                        h);
       const bool cin = corner0_in_from(d, c, parent, pin, ptris);
       ASSERT_EQ(cin, corner0_in(d, c)) << name << " cube " << c.lo.x << " " << c.lo.y << " " << c.lo.z << " side " << h;
+      // The walk from the previous box of this parent (the octree walks from
+      // child to child in Gray-code order), with the parent's list.
+      EXPECT_EQ(corner0_in_walk(d, c, prev, prev_in, ptris), cin) << name << " walk from the previous box";
+      prev = c;
+      prev_in = cin;
+      // Triangles known to meet c (those meeting its low octant) are not retested.
+      const std::vector<int> octant_tris = triangles_meeting(d, cube_of(c.lo, h / 2), ptris);
+      EXPECT_EQ(triangles_meeting(d, c, ptris, octant_tris), triangles_meeting(d, c, ptris)) << name;
       std::vector<Vec3> marks;
       for (int m = 0; m < 3; ++m)
         marks.push_back({c.lo.x + h * uni(), c.lo.y + h * uni(), c.lo.z + h * uni()});
