@@ -140,6 +140,72 @@ bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {
   return norm2(p - centre) <= radius2 * (1.0 + kBallSlack);
 }
 
+// What the face-ball filter (tet_enclosing_radius) needs of a tetrahedron with a finite
+// circumsphere, computed as tetrahedron_quality / circumradius compute them:
+// u = b - a, v = c - a, w = d - a, the face area vectors n (opposite a, b, c,
+// d: cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)), det =
+// u . n[1], and the circumcentre relative to a, x = (0.5 / det) (|u|^2 n[1] +
+// |v|^2 n[2] + |w|^2 n[3]).
+struct CircumFrame {
+  std::array<Vec3, 4> n;
+  Vec3 u, x;
+  double det;
+};
+
+CircumFrame circum_frame(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  CircumFrame f{};
+  f.u = b - a;
+  const Vec3 v = c - a, w = d - a;
+  f.n = {cross(d - b, c - b), cross(v, w), cross(w, f.u), cross(f.u, v)};
+  f.det = dot(f.u, f.n[1]);
+  f.x = (0.5 / f.det) * (norm2(f.u) * f.n[1] + norm2(v) * f.n[2] + norm2(w) * f.n[3]);
+  return f;
+}
+
+// Face-ball filter: true when the candidate ball of face l (its circumcircle's
+// ball) provably FAILS face_ball_contains(centre, r2, p[l]) as computed below,
+// so the face needs no construction. Geometry: for a tetrahedron with
+// circumcentre C, the face-l ball has centre C_l (C projected onto the face
+// plane) and r_l^2 = R^2 - h^2, h the signed distance of C from the plane
+// towards p[l]; |p[l] - C_l|^2 - r_l^2 = 2 h H = 2 lambda_l H^2 (H the height
+// of p[l] over the face, lambda_l = h / H the barycentric coordinate of C).
+// The computed test differs from the exact one by the slack (< 2^-33 R^2) plus
+// rounding: a face centre off by delta moves |p - C_l|^2 - r_l^2 by
+// 2 delta . (p[l] - o); delta is a few ulps of L^3 / |n_l| (L the longest
+// edge), the other roundings a few ulps of (L + R)^2 and of the coordinates'
+// magnitude M times L. With the conditions below (face not thin: |n_l|^2 >=
+// 2^-12 L^4; tetrahedron not flat: det^2 >= 2^-20 L^6, which keeps R below
+// 2^11 L and the computed lambda within 2^-30 of the exact one; M <= 2^12 L;
+// L^2 in [2^-280, 2^280]: no underflow or overflow) all of that is below
+// 2^-32 (L + R)^2, and the filter asks lambda_l >= 2^-20 and lambda_l H^2 >=
+// 2^-28 (L + R)^2 (computed): a factor of 8 or more above it. So a skipped
+// face would have been rejected, and the result is the same double.
+// The per-tetrahedron terms are computed once (make_face_filter); lambda_l
+// is n_l . (C - q) times the rounded 1 / det (a few ulps more, covered by the
+// margin), q any vertex of face l (a for l > 0, b for l = 0).
+struct FaceFilter {
+  const CircumFrame* frame = nullptr;  // null: no filter
+  double inv_det = 0, det2 = 0, thin = 0, bound = 0;  // 1/det, det^2, 2^-12 L^4, 2^-28 (L + R)^2
+  bool skip(int l) const {
+    const Vec3& n = frame->n[static_cast<std::size_t>(l)];
+    const double n2 = norm2(n);
+    if (n2 < thin) return false;
+    const double lambda = dot(n, l == 0 ? frame->x - frame->u : frame->x) * inv_det;
+    return lambda >= 0x1p-20 && lambda * det2 >= bound * n2;
+  }
+};
+
+FaceFilter make_face_filter(const std::array<Vec3, 4>& p, double circum_r, const CircumFrame* frame, double longest2) {
+  FaceFilter f;
+  if (frame == nullptr || !std::isfinite(circum_r) || !(longest2 >= 0x1p-280 && longest2 <= 0x1p280)) return f;
+  double m = 0;  // largest coordinate magnitude
+  for (const Vec3& q : p) m = std::max({m, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+  const double det2 = frame->det * frame->det, l3 = longest2 * std::sqrt(longest2);
+  if (!(m * m <= 0x1p24 * longest2) || !(det2 >= 0x1p-20 * l3 * l3)) return f;
+  const double span = std::sqrt(longest2) + circum_r;
+  return {frame, 1.0 / frame->det, det2, 0x1p-12 * longest2 * longest2, 0x1p-28 * span * span};
+}
+
 // Smallest enclosing ball of four points (any position, also coplanar or
 // coincident). The minimal enclosing ball is the smallest ball through a
 // support set of 2, 3 or 4 of the points with its centre in their hull, so it is
@@ -160,7 +226,8 @@ bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {
 // separated (ties: the grid tetrahedra's equal diagonals, a NaN) take the
 // exact test as before. The tested edges' radii are the same doubles
 // (0.5 sqrt(c) = 0.5 norm(d)), so the result is bit for bit the same.
-double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r) {
+// `frame` (null when the circumsphere is not finite) enables FaceFilter.
+double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r, const CircumFrame* frame) {
   double best = circum_r;  // +infinity for a flat tetrahedron
   static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
@@ -182,7 +249,9 @@ double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r) {
       best = std::min(best, 0.5 * std::sqrt(length2[i]));
     }
   }
+  const FaceFilter filter = make_face_filter(p, circum_r, frame, longest2);
   for (int l = 0; l < 4; ++l) {  // face opposite vertex l
+    if (filter.frame != nullptr && filter.skip(l)) continue;
     const Vec3 o = p[(l + 1) % 4];
     const Vec3 u = p[(l + 2) % 4] - o;
     const Vec3 v = p[(l + 3) % 4] - o;
@@ -244,7 +313,10 @@ double circumradius(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 double enclosing_radius(Vec2 a, Vec2 b, Vec2 c) { return tri_enclosing_radius(a, b, c, circumradius(a, b, c)); }
 
 double enclosing_radius(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  return tet_enclosing_radius({a, b, c, d}, circumradius(a, b, c, d));
+  const double circum = circumradius(a, b, c, d);
+  if (!std::isfinite(circum)) return tet_enclosing_radius({a, b, c, d}, circum, nullptr);
+  const CircumFrame frame = circum_frame(a, b, c, d);
+  return tet_enclosing_radius({a, b, c, d}, circum, &frame);
 }
 
 TriQuality triangle_quality(Vec2 a, Vec2 b, Vec2 c) {
@@ -293,32 +365,45 @@ TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     return q;
   }
   // Dihedral angle i at the edge of faces k < l (pairs in loop order) is
-  // pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i). Keys for
-  // extreme_candidates: -x|x| / (x^2 + y^2) = -cos|cos| of the angle of the
-  // SAME doubles (y_i, x_i), increasing with it on [0, pi] and changing by at
-  // most the change of the angle (its derivative is |sin 2 phi| <= 1). Keys
-  // 2^-20 apart thus order the exact angles of those doubles with a gap of
-  // nearly 2^-20, far above the error of the keys (a few ulps of 1, as long as
-  // x^2 + y^2 is a finite normal number; otherwise the key is NaN and the
-  // angle computed) and of atan2 (an ulp of pi); pi - phi rounds monotonically.
-  // So the skipped dihedral angles lie between computed ones and the folds
-  // below give the same doubles as folding all six.
-  std::array<double, 6> ys{}, xs{}, key{};
-  for (int k = 0, i = 0; k < 4; ++k)
-    for (int l = k + 1; l < 4; ++l, ++i) {
-      ys[i] = norm(cross(n[k], n[l]));  // angle_between's atan2 arguments
-      xs[i] = dot(n[k], n[l]);
-      const double r2 = xs[i] * xs[i] + ys[i] * ys[i];
-      key[i] = std::isnormal(r2) ? -(xs[i] * std::abs(xs[i])) / r2 : std::numeric_limits<double>::quiet_NaN();
-    }
+  // pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i), y_i = |n_k x n_l|,
+  // x_i = n_k . n_l. Keys for extreme_candidates: -cos of the exact angle
+  // between the (double) normals, -x_i / (|n_k| |n_l|), increasing on [0, pi]
+  // and changing by at most the change of the angle (its derivative is
+  // sin <= 1). Keys 2^-20 apart thus order the exact angles with a gap of
+  // nearly 2^-20, far above the error of the keys (a dot product, a square
+  // root and three roundings: a few ulps of 1) and of the computed angles
+  // (y_i and x_i are within a few ulps of |n_k| |n_l| of the exact sine and
+  // cosine terms, so atan2(y_i, x_i) is within a few ulps of pi of the exact
+  // angle) -- as long as |n_k|^2 and |n_l|^2 lie in [2^-500, 2^500], so that
+  // nothing underflows or overflows; otherwise the key is NaN and the angle
+  // computed. pi - phi rounds monotonically. So the skipped dihedral angles
+  // lie strictly between computed ones, the folds below give the same doubles
+  // as folding all six, and y_i (a cross product and a square root) is
+  // computed only for the needed angles.
+  std::array<double, 4> n2{}, nn{}, inv{};
+  std::array<bool, 4> in_range{};
+  for (int k = 0; k < 4; ++k) {
+    n2[k] = norm2(n[k]);
+    nn[k] = std::sqrt(n2[k]);  // == norm(n[k])
+    in_range[k] = n2[k] >= 0x1p-500 && n2[k] <= 0x1p500;
+    inv[k] = 1.0 / nn[k];
+  }
+  static constexpr int kPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  std::array<double, 6> xs{}, key{};
+  for (int i = 0; i < 6; ++i) {
+    const int k = kPair[i][0], l = kPair[i][1];
+    xs[i] = dot(n[k], n[l]);
+    key[i] = in_range[k] && in_range[l] ? -(xs[i] * inv[k]) * inv[l] : std::numeric_limits<double>::quiet_NaN();
+  }
   constexpr double kCosGap = 0x1p-20;
   const auto pick = extreme_candidates<6>(key, [](double below, double above) { return below + kCosGap <= above; });
   double min_dihedral = kInf, max_dihedral = 0.0;
   for (int i = 0; i < 6; ++i) {
     if (!pick.needed[i]) continue;
+    const double ys = norm(cross(n[kPair[i][0]], n[kPair[i][1]]));  // angle_between's atan2 arguments
     // atan2(y, +-0) is pi/2 rounded for every y > 0 (C Annex F): the right
     // dihedral angles of the grid tetrahedra skip the call.
-    const double phi = xs[i] == 0 && ys[i] > 0 ? std::numbers::pi / 2 : std::atan2(ys[i], xs[i]);
+    const double phi = xs[i] == 0 && ys > 0 ? std::numbers::pi / 2 : std::atan2(ys, xs[i]);
     const double theta = std::numbers::pi - phi;
     min_dihedral = std::min(min_dihedral, theta);
     max_dihedral = std::max(max_dihedral, theta);
@@ -326,17 +411,18 @@ TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   q.min_dihedral_deg = min_dihedral * kDeg;
   q.max_dihedral_deg = max_dihedral * kDeg;
 
-  const double faces = 0.5 * (norm(n[0]) + norm(n[1]) + norm(n[2]) + norm(n[3]));
+  const double faces = 0.5 * (nn[0] + nn[1] + nn[2] + nn[3]);
   const double r = 3.0 * std::abs(q.volume) / faces;
   double circum = kInf;
+  CircumFrame frame{n, u, {}, det};  // the same doubles circum_frame(a, b, c, d) gives
   if (det != 0.0) {
-    const Vec3 x = (0.5 / det) * (norm2(u) * n[1] + norm2(v) * n[2] + norm2(w) * n[3]);
-    circum = norm(x);
+    frame.x = (0.5 / det) * (norm2(u) * n[1] + norm2(v) * n[2] + norm2(w) * n[3]);
+    circum = norm(frame.x);
   }
   const double shortest2 = std::min({norm2(u), norm2(v), norm2(w), norm2(c - b), norm2(d - b), norm2(d - c)});
   // The circumsphere is one of the candidates, with the very same double value,
   // so aspect_ratio <= sphere_ratio holds exactly in floating point too.
-  q.aspect_ratio = tet_enclosing_radius({a, b, c, d}, circum) / r;
+  q.aspect_ratio = tet_enclosing_radius({a, b, c, d}, circum, det != 0.0 ? &frame : nullptr) / r;
   q.sphere_ratio = circum / r;
   q.radius_edge = circum / std::sqrt(shortest2);
   return q;

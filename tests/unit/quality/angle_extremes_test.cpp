@@ -114,6 +114,30 @@ TEST(AngleExtremes, FlatTetrahedraMatchTheFullFold) {
   }
 }
 
+// Every scale from 2^-400 to 2^400: the face area vectors' squared lengths
+// (fourth powers of the coordinates) fall below 2^-500 and above 2^500, where
+// the keys are NaN and every angle is computed, and in between; plus the
+// regular and cube-corner shapes with one vertex moved so that two dihedral
+// angles differ by about the key gap (2^-20) times a random factor in [0, 4).
+TEST(AngleExtremes, ScaledAndNearGapTetrahedraMatchTheFullFold) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), f(0.0, 4.0);
+  std::uniform_int_distribution<int> scale(-400, 400);
+  for (int i = 0; i < 20000; ++i) {
+    const int e = scale(rng);
+    std::array<Vec3, 4> p;
+    if (i % 2 == 0) {
+      for (Vec3& v : p) v = {std::ldexp(u(rng), e), std::ldexp(u(rng), e), std::ldexp(u(rng), e)};
+    } else {
+      p = i % 4 == 1 ? std::array<Vec3, 4>{Vec3{1, 1, 1}, Vec3{1, -1, -1}, Vec3{-1, 1, -1}, Vec3{-1, -1, 1}}
+                     : std::array<Vec3, 4>{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+      p[3] = p[3] + 0x1p-20 * Vec3{f(rng), f(rng), f(rng)};
+      for (Vec3& v : p) v = {std::ldexp(v.x, e), std::ldexp(v.y, e), std::ldexp(v.z, e)};
+    }
+    expect_same_tet(p[0], p[1], p[2], p[3]);
+  }
+}
+
 TEST(AngleExtremes, RandomTrianglesMatchTheFullFold) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

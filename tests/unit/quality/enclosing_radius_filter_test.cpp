@@ -137,5 +137,35 @@ TEST(EnclosingRadiusFilter, ExtremeScalesMatchTheFullSearch) {
   }
 }
 
+// The face-ball filter (simplex_quality.cpp, FaceFilter): the circumcentre
+// C = (0, 0, h) at a distance h = +-2^-k (k up to 60) from the face abc (a, b,
+// c on the unit circle of z = 0), d on the sphere above that face: for h < 0
+// the face ball holds d and wins, for tiny h > 0 the ball misses d by less
+// than the measurement slack, for larger h the circumsphere wins. The whole
+// tetrahedron is moved by an offset of 2^0 .. 2^20 (coordinates far larger
+// than the edges: the filter must stand aside), in random vertex order.
+TEST(EnclosingRadiusFilter, CircumcentreNearAFaceMatchesTheFullSearch) {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586), up(0.05, 1.0);
+  std::uniform_int_distribution<int> k(0, 60), shift(0, 20), perm(0, 3);
+  for (int i = 0; i < 60000; ++i) {
+    std::array<Vec3, 4> p;
+    for (int j = 0; j < 3; ++j) {
+      const double t = angle(rng);
+      p[static_cast<std::size_t>(j)] = {std::cos(t), std::sin(t), 0};
+    }
+    const double h = (i % 2 == 0 ? 1 : -1) * std::ldexp(1.0, -k(rng));
+    Vec3 dir{u(rng), u(rng), up(rng)};
+    dir = scaled(dir, 1.0 / norm(dir));
+    p[3] = Vec3{0, 0, h} + scaled(dir, std::sqrt(1 + h * h));
+    if (i % 3 != 0) {
+      const Vec3 offset = scaled(Vec3{u(rng), u(rng), u(rng)}, std::ldexp(1.0, shift(rng)));
+      for (Vec3& v : p) v = v + offset;
+    }
+    std::swap(p[static_cast<std::size_t>(perm(rng))], p[3]);
+    expect_same(p);
+  }
+}
+
 }  // namespace
 }  // namespace pqmesh
