@@ -156,8 +156,124 @@ class Assembler {
     const Vec3 mid = ends.size() == 2 ? 0.5 * (book_.point(ends[0]) + book_.point(ends[1])) : a + tm * (b - a);
     const VertexKey vk{VertexKind::EdgeMidpoint, key_centre(key), {}, edge};
     const int v = book_.id(vk, [&] { return apex_on_edge(tris, a, b, ends, mid, t0, t1); });
-    for (const Tri& t : tris) cone(leaf, t, v);
     ++out_.stats.edge;
+    if (!(worst_cone(tris, book_.point(v)) < std::numeric_limits<double>::infinity()) && two_apex_box(leaf, tris, v)) {
+      ++out_.stats.edge_two_apex;
+      return;
+    }
+    for (const Tri& t : tris) cone(leaf, t, v);
+  }
+
+  // An edge box whose apex v on E does not see every face triangle (exact
+  // orient3d; our construction, docs/ALGORITHM.md §12.5 "two cone points"):
+  // a warp pushed part of a face into the box past every point of E (suite
+  // seed 67: a face shared with smaller edge boxes of the same E, which E
+  // crosses just above their boundary; §4.3's first pass moves its lower
+  // half h_small/8 away from E, while E stays within 0.011 h of it).
+  // A set S' of face triangles (the "far" set) is coned from a second point
+  // w inside the box, the rest from v, and the gap between the two stars is
+  // filled by cone(v, (a, b, w)) for every edge a -> b of the rim of S' (an
+  // edge of a triangle of S' whose reverse is in none). As chains
+  // cone(v, S') = cone(w, S') + Σ cone(v, (a, b, w)) (the triangles (a, b, w)
+  // have the rim of S' as boundary), so the tetrahedra have the boundary of
+  // the single-apex star, and with every one positive (exact orient3d) they
+  // tile P ∧ I(b) face to face. E ∩ b stays the two mesh edges from v to its
+  // ends (each end is on a chord, so a cone or rim tetrahedron of v has it).
+  // S' starts as the triangles v does not see; a rim edge whose tetrahedron
+  // is not positive (v cannot see it past the pushed part) adds the triangle
+  // across it, until every rim tetrahedron is positive (then a valid w) or a
+  // triangle w does not see, or a rim edge on F or G, stops it (w rejected).
+  // w: the interior grid points at i/4, j/4, k/4 of the box (i, j, k in
+  // 1..3, in that order); the one with the best worst tet_shape among the
+  // valid ones, the first on ties (floats only choose between valid
+  // constructions). Returns false (nothing made; the rebuild loop then
+  // freezes the warp, as before) when none is valid or the construction is
+  // off for this pass (allow_two_apex; two_apex_points() records the box
+  // vertices of a box that had a valid one, mesh_boxes).
+  bool two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v) {
+    const BoxKey<3>& key = tree_.key(leaf);
+    const std::int64_t q = key.fine_side() / 4;
+    if (q * 4 != key.fine_side()) return false;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const Vec3 V = book_.point(v);
+    auto seen = [&](const Tri& t, Vec3 apex) {
+      return orient3d(book_.point(t[0]), book_.point(t[2]), book_.point(t[1]), apex) == Sign::Positive;
+    };
+    // Directed edge -> its face triangle (each directed edge is in one).
+    std::map<std::pair<int, int>, std::size_t> owner;
+    for (std::size_t n = 0; n < tris.size(); ++n)
+      for (std::size_t k = 0; k < 3; ++k) owner.emplace(std::pair{tris[n][k], tris[n][(k + 1) % 3]}, n);
+    std::vector<char> far0(tris.size(), 0);
+    for (std::size_t n = 0; n < tris.size(); ++n) far0[n] = seen(tris[n], V) ? 0 : 1;
+    // The far set grown for w (empty when w is rejected).
+    auto grow = [&](Vec3 W) {
+      std::vector<char> far = far0;
+      for (std::size_t n = 0; n < tris.size(); ++n)
+        if (far[n] && !seen(tris[n], W)) return std::vector<char>{};
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t n = 0; n < tris.size(); ++n) {
+          if (!far[n]) continue;
+          for (std::size_t k = 0; k < 3; ++k) {
+            const int x = tris[n][k], y = tris[n][(k + 1) % 3];
+            const auto across = owner.find({y, x});
+            if (across != owner.end() && far[across->second]) continue;
+            if (orient3d(book_.point(x), W, book_.point(y), V) == Sign::Positive) continue;
+            if (across == owner.end() || !seen(tris[across->second], W)) return std::vector<char>{};
+            far[across->second] = 1;
+            changed = true;
+          }
+        }
+      }
+      return far;
+    };
+    auto rim_of = [&](const std::vector<char>& far) {
+      std::vector<std::pair<int, int>> rim;
+      for (std::size_t n = 0; n < tris.size(); ++n)
+        if (far[n])
+          for (std::size_t k = 0; k < 3; ++k) {
+            const int x = tris[n][k], y = tris[n][(k + 1) % 3];
+            const auto across = owner.find({y, x});
+            if (across == owner.end() || !far[across->second]) rim.push_back({x, y});
+          }
+      return rim;
+    };
+    const GridPoint lo = key_corner(key, 0);
+    double best_shape = kInf;
+    GridPoint best{};
+    for (std::int64_t i = 1; i <= 3; ++i)
+      for (std::int64_t j = 1; j <= 3; ++j)
+        for (std::int64_t k = 1; k <= 3; ++k) {
+          GridPoint g = lo;
+          g.f[0] += i * q;
+          g.f[1] += j * q;
+          g.f[2] += k * q;
+          const Vec3 W = grid_coordinates(tree_, g);
+          const std::vector<char> far = grow(W);
+          if (far.empty()) continue;
+          double s = 0;
+          for (std::size_t n = 0; n < tris.size(); ++n) {
+            const Vec3 x = book_.point(tris[n][0]), y = book_.point(tris[n][2]), z = book_.point(tris[n][1]);
+            s = std::max(s, tet_shape(x, y, z, far[n] ? W : V));
+          }
+          for (const auto& [x, y] : rim_of(far)) s = std::max(s, tet_shape(book_.point(x), W, book_.point(y), V));
+          if (s < best_shape) {
+            best_shape = s;
+            best = g;
+          }
+        }
+    if (!(best_shape < kInf)) return false;
+    for (const Tri& t : tris)
+      for (const int id : t)
+        if (book_.key(id).kind == VertexKind::Grid || book_.key(id).kind == VertexKind::Warped)
+          two_apex_points_.push_back(book_.key(id).p);
+    if (!two_apex_) return false;
+    // An interior grid point of the leaf: no other box has it, never warped.
+    const int w = centre_vertex(best);
+    const std::vector<char> far = grow(book_.point(w));
+    for (std::size_t n = 0; n < tris.size(); ++n) cone(leaf, tris[n], far[n] ? w : v);
+    for (const auto& [x, y] : rim_of(far)) tet(leaf, "rim", x, w, y, v);
+    return true;
   }
 
   // The apex on E (our choice within §4.5.3): the midpoint of E ∩ I(b),
@@ -321,6 +437,12 @@ class Assembler {
     job_box_ = job;
   }
   void collect_bad() { collect_ = true; }
+  // Edge boxes whose apex on E does not see every face triangle are made
+  // from two cone points (two_apex_box) only when allowed; either way
+  // two_apex_points() lists the box vertices (grid points, repeats allowed)
+  // of every box that had a valid such construction.
+  void allow_two_apex(bool on) { two_apex_ = on; }
+  const std::vector<GridPoint>& two_apex_points() const { return two_apex_points_; }
   // The largest tet_shape over the tetrahedra made so far (+infinity for one
   // flat in floating point).
   double worst_shape() const {
@@ -692,6 +814,8 @@ class Assembler {
   std::int32_t job_ = -1;
   BoxJob job_box_;
   bool collect_ = false;
+  bool two_apex_ = false;
+  std::vector<GridPoint> two_apex_points_;  // two_apex_points()
   std::vector<GridPoint> bad_;  // moved grid points of inverted tetrahedra (collect_ mode)
   std::vector<std::uint8_t> bad_axes_;  // parallel to bad_ (bad_axes())
   std::vector<std::int32_t> bad_jobs_;
@@ -743,8 +867,17 @@ void release_free_heap() {
 
 }  // namespace
 
-BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                   std::span<const BoxJob> jobs, const BoxMeshOptions& options) {
+namespace {
+
+// One run of the warped (or unwarped) box meshing; `two_apex` allows the
+// two-cone-point edge boxes; `wanted` gets the box vertices of the boxes
+// for which a trial or the final pass had a valid one (allowed or not),
+// `held` the grid points the rebuild loop froze or limited to their box
+// faces.
+BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                        std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex,
+                        std::unordered_set<GridPoint, GridPointHash>& wanted,
+                        std::unordered_set<GridPoint, GridPointHash>& held) {
   WarpTable warps;
   std::int64_t rebuilds = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
@@ -770,7 +903,9 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
     for (int round = 0; round < 16; ++round) {
       auto trial = std::make_unique<Assembler>(tree, corners, domain, &warps);
       trial->collect_bad();
+      trial->allow_two_apex(two_apex);
       run_jobs(*trial, tree, jobs);
+      wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
       if (trial->bad().empty()) {
         done = std::move(trial);
         break;
@@ -824,17 +959,23 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
       if (wider.out_of_face > 0) {
         auto trial = std::make_unique<Assembler>(tree, corners, domain, &wider);
         trial->collect_bad();
+        trial->allow_two_apex(two_apex);
         run_jobs(*trial, tree, jobs);
+        wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
         if (trial->bad().empty() && trial->worst_shape() < worst_before) {
           warps = std::move(wider);
           done = std::move(trial);
         }
       }
     }
+    for (const GridPoint& g : frozen) held.insert(g);
+    for (const auto& [g, axes] : second_only) held.insert(g);
   }
   if (!done) {
     done = std::make_unique<Assembler>(tree, corners, domain, options.warp ? &warps : nullptr);
+    done->allow_two_apex(two_apex);
     run_jobs(*done, tree, jobs);
+    wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }
   Assembler& a = *done;
   a.count_squares();
@@ -855,6 +996,72 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   out.warp_centres = warps.centres;
   out.warp_shortened = warps.shortened;
   return out;
+}
+
+// The worst tet_shape of a finished mesh (only compared) and the index of
+// its first tetrahedron of that shape.
+std::pair<double, std::size_t> worst_tet_shape(const BoxMesh& m) {
+  std::pair<double, std::size_t> worst{0, 0};
+  for (std::size_t i = 0; i < m.mesh.tetrahedra.size(); ++i) {
+    const auto& t = m.mesh.tetrahedra[i];
+    const double s = tet_shape(m.mesh.vertices[static_cast<std::size_t>(t[0])],
+                               m.mesh.vertices[static_cast<std::size_t>(t[1])],
+                               m.mesh.vertices[static_cast<std::size_t>(t[2])],
+                               m.mesh.vertices[static_cast<std::size_t>(t[3])]);
+    if (s > worst.first) worst = {s, i};
+  }
+  return worst;
+}
+
+// Whether a tetrahedron of job `job` has a grid point or warped box vertex
+// in both `held` and `wanted` (by its key).
+bool job_touches(const BoxMesh& m, std::int32_t job, const std::unordered_set<GridPoint, GridPointHash>& held,
+                 const std::unordered_set<GridPoint, GridPointHash>& wanted) {
+  for (std::size_t i = 0; i < m.mesh.tetrahedra.size(); ++i) {
+    if (m.tet_job[i] != job) continue;
+    for (const int v : m.mesh.tetrahedra[i]) {
+      const VertexKey& k = m.keys[static_cast<std::size_t>(v)];
+      if ((k.kind == VertexKind::Grid || k.kind == VertexKind::Warped) && held.count(k.p) > 0 &&
+          wanted.count(k.p) > 0)
+        return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+// Two-cone-point edge boxes (Assembler::two_apex_box, docs/ALGORITHM.md
+// §12.5) keep an edge box valid where the single apex on E inverts, so the
+// rebuild loop does not freeze the warp that caused it; but the warp left in
+// place can make another box worse than the frozen run does (suite seeds 5,
+// 27). So the run without them is made first. Only if the box of that
+// run's worst tetrahedron has a point that the rebuild loop held back
+// (frozen or kept within its box faces) and that is a vertex of a box which
+// had a valid two-point construction in some trial (otherwise a held point
+// of a two-point box did not make the worst box, and the second run costs a
+// whole run for nothing: bounded seed 58 took 2.7x cpu), the run with them is
+// made too, and kept only when its worst tetrahedron (tet_shape, only
+// compared; both meshes are valid by exact orient3d) is strictly better.
+// Otherwise the first run is remade (not kept meanwhile: a mesh is about
+// half the peak memory). Every other run does no extra work and keeps its
+// bytes; no run gets a worse worst tetrahedron.
+BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                   std::span<const BoxJob> jobs, const BoxMeshOptions& options) {
+  std::unordered_set<GridPoint, GridPointHash> wanted, held;
+  BoxMesh single = mesh_boxes_pass(tree, corners, domain, jobs, options, false, wanted, held);
+  if (wanted.empty()) return single;
+  const auto [single_worst, worst_tet] = worst_tet_shape(single);
+  if (single.mesh.tetrahedra.empty() || !job_touches(single, single.tet_job[worst_tet], held, wanted)) return single;
+  single = BoxMesh{};
+  wanted.clear();
+  held.clear();
+  release_free_heap();
+  BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, true, wanted, held);
+  if (worst_tet_shape(two).first < single_worst) return two;
+  two = BoxMesh{};
+  release_free_heap();
+  return mesh_boxes_pass(tree, corners, domain, jobs, options, false, wanted, held);
 }
 
 }  // namespace pqmesh::tet3d
