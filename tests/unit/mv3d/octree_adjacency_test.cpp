@@ -3,7 +3,8 @@
 // of three small corpus models, the components of P ∩ ex(big) over all facet
 // triangles (no candidate lists, no cache, no shared-triangle shortcut), with
 // P ∧ big and P ∧ small located by their representative triangles or, for a
-// whole-cube component, by the cube's centre.
+// whole-cube component, by the cube's centre. A second test does the same
+// for the pairs around the duplicated boxes of a hand-made U-shaped prism.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -134,6 +135,91 @@ TEST(OctreeAdjacency, BalanceAdjacentMatchesComponentsFromScratch) {
   EXPECT_GT(all.duplicated, 0);
   EXPECT_GT(all.far_adjacent, 0);
   EXPECT_GT(all.far_apart, 0);
+}
+
+// The U of ApartPairsAroundABoxMeetingPTwice: the prism over [0,4]^2 minus
+// the slot [1.3, 1.4] x [1, 4] (open at y = 4), z in [0, 1]. The slot is off
+// every box plane (centred at x = 2, a box plane, no leaf crossed it), so
+// boxes wider than it cross it; one that misses the slot's end (y = 1) meets
+// P in two components, one per prong, and is duplicated (cube_single false,
+// cube_tris holding both prongs' triangles). Its neighbours include whole
+// cubes inside one prong.
+Plc3 u_prism() { return octest::extrude({{0, 0}, {4, 0}, {4, 4}, {1.4, 4}, {1.4, 1}, {1.3, 1}, {1.3, 4}, {0, 4}}, 1); }
+
+struct SplitPairCounts {
+  std::int64_t pairs = 0, apart = 0;
+  // "Apart" pairs that each early "adjacent" answer of balance_adjacent must
+  // leave alone: a whole cube touching a box that P meets in several
+  // components (the whole-cube rule needs connected()), and two boxes with
+  // triangles, one's representative triangle in the other's cube_tris (the
+  // list intersection needs cube_single).
+  std::int64_t apart_whole_touching_split = 0, apart_listed_triangle = 0;
+};
+
+bool closed_cubes_touch(const Cube& c, const Cube& d) {
+  return c.lo.x <= d.hi.x && d.lo.x <= c.hi.x && c.lo.y <= d.hi.y && d.lo.y <= c.hi.y && c.lo.z <= d.hi.z &&
+         d.lo.z <= c.hi.z;
+}
+
+bool inside(const Cube& c, const Cube& ex) {
+  return c.lo.x >= ex.lo.x && c.lo.y >= ex.lo.y && c.lo.z >= ex.lo.z && c.hi.x <= ex.hi.x && c.hi.y <= ex.hi.y &&
+         c.hi.z <= ex.hi.z;
+}
+
+// Every pair of touching leaves (small ⊂ ex(big), h(big) >= h(small)) with at
+// least one leaf that P meets in several components, against the reference.
+// Octree without the separating splits: its leaves are larger, so boxes
+// crossing the slot remain leaves.
+SplitPairCounts check_split_pairs(const Domain3& d) {
+  OctreeOptions options;
+  options.separate = false;
+  OctreeBuilder b(d, options);
+  b.build();
+  const OctTree& t = b.tree();
+  const auto& leaves = b.leaves_by_id();
+  const auto split = [&](std::int32_t x) { return b.data(x).rep_triangle >= 0 && !b.data(x).cube_single; };
+  const auto holds = [](const std::vector<int>& list, int tri) {
+    return std::binary_search(list.begin(), list.end(), tri);
+  };
+  SplitPairCounts count;
+  for (const std::int32_t s : leaves) {
+    if (!b.data(s).has_component || !split(s)) continue;
+    for (const std::int32_t o : leaves) {
+      if (o == s || !b.data(o).has_component || !closed_cubes_touch(b.cube(s), b.cube(o))) continue;
+      for (const bool s_big : {true, false}) {
+        const std::int32_t big = s_big ? s : o, small = s_big ? o : s;
+        if (t.level(small) < t.level(big) || !inside(b.cube(small), b.ex_cube(big))) continue;
+        const bool want = reference_adjacent(b, big, small);
+        EXPECT_EQ(b.balance_adjacent(big, small), want) << "u prism: big " << big << " small " << small;
+        ++count.pairs;
+        if (want) continue;
+        ++count.apart;
+        const NodeData3& db = b.data(big);
+        const NodeData3& ds = b.data(small);
+        if (b.data(o).rep_triangle < 0) ++count.apart_whole_touching_split;
+        if (db.rep_triangle >= 0 && ds.rep_triangle >= 0 &&
+            (holds(db.cube_tris, ds.rep_triangle) || holds(ds.cube_tris, db.rep_triangle)))
+          ++count.apart_listed_triangle;
+      }
+    }
+  }
+  std::printf(
+      "u prism: leaves %zu, duplicates %lld; touching pairs with a split box %lld, apart %lld (whole cube "
+      "and split box %lld, a listed triangle %lld)\n",
+      leaves.size(), static_cast<long long>(b.stats().duplicates), static_cast<long long>(count.pairs),
+      static_cast<long long>(count.apart), static_cast<long long>(count.apart_whole_touching_split),
+      static_cast<long long>(count.apart_listed_triangle));
+  return count;
+}
+
+// No corpus octree has an "apart" pair involving a box that P meets in
+// several components, so the existing comparison cannot see the connected()
+// and cube_single requirements of balance_adjacent's early answers; this
+// octree has many (they are what the test is for: it fails without them).
+TEST(OctreeAdjacency, ApartPairsAroundABoxMeetingPTwice) {
+  const SplitPairCounts c = check_split_pairs(make_domain(u_prism()));
+  EXPECT_GT(c.apart_whole_touching_split, 0);
+  EXPECT_GT(c.apart_listed_triangle, 0);
 }
 
 }  // namespace
