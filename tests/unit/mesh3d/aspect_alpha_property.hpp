@@ -20,17 +20,13 @@
 
 namespace pqmesh::test {
 
-// Measured 2026-12-01 (Release build of that day's working tree, incl. the
-// in-progress "sliver" edits of src/tet3d) on bounded-feature random
-// polyhedra seeds 0-29 and 100-121 (46 meshed validly, 6 stopped at 20 s
-// cpu) and the fast corpus: aspect * alpha median 257, 90th percentile
-// 1,221, then 1,553 (seed 116), 1,579 (seed 16, unwarped fallback), 1,706
-// (seed 9), 2,182 (seed 100) and
-// one outlier, 21,453 (seed 20: a thin frustum with two cavities, alpha
-// 62.1 deg, max aspect 19,790). C = 25,000 is that maximum with a margin of
-// ~17%; without seed 20 it would be ~2,500. Fast corpus: cube 110, l_block
-// 229, tuning_fork 244. The old ceiling (2.1e5) came from one harsh seed
-// meshed by the unwarped fallback.
+// Measured 2026-12-02 (stop 19, the probe with check_mesh on every mesh):
+// every-run seeds 0..199 max 990 (seed 45); suite seeds 0..199 max 3,947
+// (seed 175; seed 67, 13,292 before, is 1,047 with two cone points);
+// bounded seeds 0..199 max 20,018 (seed 172), then 11,227 (seed 167),
+// 4,568 (seed 193); corpus at most 315 (cube.obj). C = 25,000 is that
+// maximum with a margin of about a quarter (first set for bounded seed 20,
+// 21,453 on stop 13's code, 2,558 or less since).
 inline constexpr double kAspectAlphaC = kMeasuredAspectAlphaC;  // the library's copy (tetmesh.hpp)
 
 // aspect * alpha of a mesh, for the messages.
