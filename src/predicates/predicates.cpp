@@ -9,20 +9,17 @@
 #include <limits>
 #include <optional>
 
+#include "predicates/expansion.hpp"
+
 namespace pqmesh {
 namespace {
 
+using detail::add_triple_product;
+using detail::Expansion;
+using detail::split_veltkamp;
+using detail::two_product;
 
 Sign sign_of_mpq(const mpq_class& v) { return static_cast<Sign>(sgn(v)); }
-
-// Veltkamp's split: hi + lo == a, each with at most 26 significant bits
-// (exact unless 2^27 a overflows).
-void split_veltkamp(double a, double& hi, double& lo) {
-  const double c = 134217729.0 * a;  // 2^27 + 1
-  const double big = c - a;
-  hi = c - big;
-  lo = a - hi;
-}
 
 // Second stage, before GMP: evaluate the same expression with error-free
 // transformations (TwoSum; Dekker's product error with Veltkamp's split) and
@@ -116,15 +113,6 @@ bool scale_group(double (&v)[N], int floor_exp) {
 }
 bool scale_axis(double (&v)[3]) { return scale_group(v, 400); }
 
-// p + err == a * b exactly (no overflow or underflow).
-void two_product(double a, double b, double& p, double& err) {
-  p = a * b;
-  double ah, al, bh, bl;
-  split_veltkamp(a, ah, al);
-  split_veltkamp(b, bh, bl);
-  err = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-}
-
 // d = x - y, true when that is exact (Knuth's two-difference leaves no error;
 // NaN and infinities fail).
 bool exact_difference(double x, double y, double& d) {
@@ -132,47 +120,6 @@ bool exact_difference(double x, double y, double& d) {
   const double y_virtual = x - d, x_virtual = d + y_virtual;
   return (x - x_virtual) + (y_virtual - y) == 0;
 }
-
-// Three products a b c, each exact as four doubles p1 + e1 + p2 + e2 (a b =
-// p + e, p c = p1 + e1, e c = p2 + e2), added to `sum`. Exact when every
-// nonzero factor lies in [2^-250, 1): every partial value is then a multiple
-// of at least 2^-909 and below 1 (orient3d_expansion).
-template <class Sum>
-void add_triple_product(Sum& sum, double a, double b, double c) {
-  double p = 0, e = 0, p1 = 0, e1 = 0, p2 = 0, e2 = 0;
-  two_product(a, b, p, e);
-  two_product(p, c, p1, e1);
-  two_product(e, c, p2, e2);
-  sum.add(e2);
-  sum.add(p2);
-  sum.add(e1);
-  sum.add(p1);
-}
-
-// A sum of doubles held exactly: components nonoverlapping, by increasing
-// magnitude, zeros removed; so the sign of the sum is that of the last one.
-template <int N>
-class Expansion {
- public:
-  void add(double b) {  // adding a double adds at most one component
-    double q = b;
-    int m = 0;
-    for (int i = 0; i < n_; ++i) {
-      const double s = q + c_[i];  // two-sum: s + t == q + c_[i] exactly
-      const double bv = s - q, av = s - bv;
-      const double t = (q - av) + (c_[i] - bv);
-      if (t != 0) c_[m++] = t;
-      q = s;
-    }
-    if (q != 0 || m == 0) c_[m++] = q;
-    n_ = m;
-  }
-  Sign sign() const { return n_ == 0 ? Sign::Zero : sign_of(c_[n_ - 1]); }
-
- private:
-  double c_[N] = {};
-  int n_ = 0;
-};
 
 // The exact sign of sum_k x_k y_k: the x group and the y group are each
 // scaled by one power of two (the sum is multiplied by a positive factor),
@@ -241,17 +188,7 @@ bool detail::orient2d_expansion(Vec2 a, Vec2 b, Vec2 c, Sign& sign) {
 }
 
 Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
-  const double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
-  const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
-  const double m1 = cy * dz - cz * dy, m2 = cx * dz - cz * dx, m3 = cx * dy - cy * dx;
-  const double det = bx * m1 - by * m2 + bz * m3;
-  const double permanent = std::abs(bx) * (std::abs(cy * dz) + std::abs(cz * dy)) +
-                           std::abs(by) * (std::abs(cx * dz) + std::abs(cz * dx)) +
-                           std::abs(bz) * (std::abs(cx * dy) + std::abs(cy * dx));
-  if (Sign s{}; detail::filtered_sign(det, permanent, 16, s,
-                                      [&] { return detail::no_tiny_factor(bx, by, bz, cx, cy, cz, dx, dy, dz); }))
-    return s;
+  if (Sign s{}; detail::orient3d_filter(a, b, c, d, s)) return s;
   if (Sign s = Sign::Zero; detail::orient3d_expansion(a, b, c, d, s)) return s;
   const mpq_class m[3][3] = {{q(b.x) - q(a.x), q(b.y) - q(a.y), q(b.z) - q(a.z)},
                              {q(c.x) - q(a.x), q(c.y) - q(a.y), q(c.z) - q(a.z)},
@@ -342,8 +279,7 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
     for (int i = 0; i < 4; ++i)
       if (i != skip) r[k++] = i;
     const Vec3 u = p[r[0]], v = p[r[1]], w = p[r[2]];
-    if (!absolute)
-      return u.x * (v.y * w.z - v.z * w.y) - u.y * (v.x * w.z - v.z * w.x) + u.z * (v.x * w.y - v.y * w.x);
+    if (!absolute) return u.x * (v.y * w.z - v.z * w.y) - u.y * (v.x * w.z - v.z * w.x) + u.z * (v.x * w.y - v.y * w.x);
     return std::abs(u.x) * (std::abs(v.y * w.z) + std::abs(v.z * w.y)) +
            std::abs(u.y) * (std::abs(v.x * w.z) + std::abs(v.z * w.x)) +
            std::abs(u.z) * (std::abs(v.x * w.y) + std::abs(v.y * w.x));
@@ -375,8 +311,10 @@ Sign insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
       ++k;
     }
     const mpq_class term = lq[i] * det3(m);
-    if (i % 2 == 0) exact -= term;
-    else exact += term;
+    if (i % 2 == 0)
+      exact -= term;
+    else
+      exact += term;
   }
   return -sign_of_mpq(exact);
 }

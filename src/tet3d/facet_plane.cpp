@@ -8,18 +8,28 @@
 
 namespace pqmesh::tet3d {
 
-FacetPlane::FacetPlane(const Domain3& domain, int facet) : facet_(facet) {
+namespace {
+
+// The first facet triangle of `facet` (it spans the facet's plane).
+std::array<Vec3, 3> first_triangle(const Domain3& domain, int facet) {
   for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
     if (domain.facet_triangle_owner[t] != facet) continue;
     const auto& tri = domain.facet_triangles[t];
-    a_ = domain.plc.vertices[static_cast<std::size_t>(tri[0])];
-    b_ = domain.plc.vertices[static_cast<std::size_t>(tri[1])];
-    c_ = domain.plc.vertices[static_cast<std::size_t>(tri[2])];
-    const Vec3 n = cross(b_ - a_, c_ - a_);
-    n_ = (1.0 / norm(n)) * n;
-    return;
+    return {domain.plc.vertices[static_cast<std::size_t>(tri[0])],
+            domain.plc.vertices[static_cast<std::size_t>(tri[1])],
+            domain.plc.vertices[static_cast<std::size_t>(tri[2])]};
   }
   throw InternalError("tet3d: facet " + std::to_string(facet) + " has no triangle");
+}
+
+}  // namespace
+
+FacetPlane::FacetPlane(const Domain3& domain, int facet) : FacetPlane(facet, first_triangle(domain, facet)) {}
+
+FacetPlane::FacetPlane(int facet, const std::array<Vec3, 3>& triangle)
+    : facet_(facet), a_(triangle[0]), b_(triangle[1]), c_(triangle[2]), side_(a_, b_, c_) {
+  const Vec3 n = cross(b_ - a_, c_ - a_);
+  n_ = (1.0 / norm(n)) * n;
 }
 
 Vec3 FacetPlane::settle(Vec3 p, int axis) const {
@@ -28,7 +38,7 @@ Vec3 FacetPlane::settle(Vec3 p, int axis) const {
   // two doubles on either side of it by steps doubling from one ulp, then
   // bisect down to adjacent doubles: the plane then meets the ulp box of both,
   // within_ulp_of_plane holds. Every comparison is an exact orient3d.
-  if (within_ulp_of_plane(p, a_, b_, c_)) return p;
+  if (side_.meets_ulp_box(p)) return p;
   const double inf = std::numeric_limits<double>::infinity();
   const Sign s0 = side(p);
   const double na = axis_coord(n_, axis);
@@ -54,9 +64,9 @@ Vec3 FacetPlane::settle(Vec3 p, int axis) const {
         (sm == s0 ? lo : hi) = mid;
       }
       axis_ref(q, axis) = lo;
-      if (within_ulp_of_plane(q, a_, b_, c_)) return q;
+      if (side_.meets_ulp_box(q)) return q;
       axis_ref(q, axis) = hi;
-      if (within_ulp_of_plane(q, a_, b_, c_)) return q;
+      if (side_.meets_ulp_box(q)) return q;
       break;
     }
     near = far;
