@@ -19,7 +19,8 @@ std::vector<TriQuality> element_quality(const TriMesh2& mesh) {
 std::vector<TetQuality> element_quality(const TetMesh3& mesh) {
   std::vector<TetQuality> out;
   out.reserve(mesh.tetrahedra.size());
-  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) out.push_back(detail::quality_of_element(mesh, e));
+  TetrahedronQualityMemo memo;
+  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) out.push_back(detail::quality_of_element(mesh, e, memo));
   return out;
 }
 

@@ -148,7 +148,8 @@ QualityReport quality_report(const TriMesh2& mesh) {
 
 QualityReport quality_report(const TetMesh3& mesh) {
   ReportBuilder<TetQuality> b(3);
-  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) b.add(detail::quality_of_element(mesh, e));
+  TetrahedronQualityMemo memo;
+  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) b.add(detail::quality_of_element(mesh, e, memo));
   return b.finish();
 }
 

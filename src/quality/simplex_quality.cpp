@@ -13,6 +13,7 @@
 
 #include "predicates/predicates.hpp"
 #include "pqmesh/quality.hpp"
+#include "quality/tetrahedron_shape.hpp"
 
 namespace pqmesh {
 namespace {
@@ -127,18 +128,7 @@ MinMax min_max_angle(Vec2 a, Vec2 b, Vec2 c, double opposite_a, double opposite_
 
 // ---- tetrahedra ----
 
-// Containment test for the face-circumcircle candidate balls of the minimal
-// enclosing ball search. It compares a constructed centre and radius with a
-// relative slack of kBallSlack on squared lengths. That is a tolerance, which
-// DESIGN.md §3 forbids in decisions; it is acceptable HERE because the result
-// is only a measurement: accepting a ball that misses a vertex by the slack
-// understates R_enc by at most ~kBallSlack/2 relative, and rejecting the true
-// minimal ball because of rounding would overstate it by a whole candidate.
-constexpr double kBallSlack = 1e-10;
-
-bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {
-  return norm2(p - centre) <= radius2 * (1.0 + kBallSlack);
-}
+// face_ball_contains and its measurement slack: tetrahedron_shape.hpp.
 
 // What the face-ball filter (tet_enclosing_radius) needs of a tetrahedron with a finite
 // circumsphere, computed as tetrahedron_quality / circumradius compute them:
@@ -227,7 +217,15 @@ FaceFilter make_face_filter(const std::array<Vec3, 4>& p, double circum_r, const
 // exact test as before. The tested edges' radii are the same doubles
 // (0.5 sqrt(c) = 0.5 norm(d)), so the result is bit for bit the same.
 // `frame` (null when the circumsphere is not finite) enables FaceFilter.
-double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r, const CircumFrame* frame) {
+// The search is split in three parts (tetrahedron_shape reuses the first two
+// without the filter): the edge stage, the face balls' construction from
+// difference vectors, and tet_enclosing_radius's containment tests.
+struct EdgeStage {
+  double best;      // min(circum_r, radii of the edges whose diametral ball holds all four)
+  double longest2;  // the largest computed squared edge length
+};
+
+EdgeStage enclosing_edge_stage(const std::array<Vec3, 4>& p, double circum_r) {
   double best = circum_r;  // +infinity for a flat tetrahedron
   static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
@@ -249,19 +247,41 @@ double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r, const
       best = std::min(best, 0.5 * std::sqrt(length2[i]));
     }
   }
-  const FaceFilter filter = make_face_filter(p, circum_r, frame, longest2);
+  return {best, longest2};
+}
+
+// The circumcircle ball of the face opposite p[l], relative to the face's first
+// vertex o = p[(l + 1) % 4]: centre o + x, squared radius r2. Not `valid` for a
+// collinear face (no circumcircle; the edges cover it). x and r2 are computed
+// from the face's two difference vectors only.
+struct FaceBall {
+  Vec3 x;
+  double r2;
+  bool valid;
+};
+
+FaceBall face_ball(const std::array<Vec3, 4>& p, int l) {
+  const Vec3 o = p[(l + 1) % 4];
+  const Vec3 u = p[(l + 2) % 4] - o;
+  const Vec3 v = p[(l + 3) % 4] - o;
+  const Vec3 w = cross(u, v);
+  const double w2 = norm2(w);
+  if (w2 == 0.0) return {{}, 0.0, false};
+  // Circumcentre of the face relative to o: x with x.u = |u|^2/2, x.v = |v|^2/2, x.w = 0.
+  const Vec3 x = (1.0 / (2.0 * w2)) * cross(norm2(u) * v - norm2(v) * u, w);
+  return {x, norm2(x), true};
+}
+
+double tet_enclosing_radius(const std::array<Vec3, 4>& p, double circum_r, const CircumFrame* frame) {
+  const EdgeStage edges = enclosing_edge_stage(p, circum_r);
+  double best = edges.best;
+  const FaceFilter filter = make_face_filter(p, circum_r, frame, edges.longest2);
   for (int l = 0; l < 4; ++l) {  // face opposite vertex l
     if (filter.frame != nullptr && filter.skip(l)) continue;
-    const Vec3 o = p[(l + 1) % 4];
-    const Vec3 u = p[(l + 2) % 4] - o;
-    const Vec3 v = p[(l + 3) % 4] - o;
-    const Vec3 w = cross(u, v);
-    const double w2 = norm2(w);
-    if (w2 == 0.0) continue;  // collinear face: no circumcircle, edges cover it
-    // Circumcentre of the face relative to o: x with x.u = |u|^2/2, x.v = |v|^2/2, x.w = 0.
-    const Vec3 x = (1.0 / (2.0 * w2)) * cross(norm2(u) * v - norm2(v) * u, w);
-    const double r2 = norm2(x);
-    if (std::sqrt(r2) < best && face_ball_contains(o + x, r2, p[l])) best = std::sqrt(r2);
+    const FaceBall ball = face_ball(p, l);
+    if (!ball.valid) continue;
+    const double radius = std::sqrt(ball.r2);
+    if (radius < best && face_ball_contains(p[(l + 1) % 4] + ball.x, ball.r2, p[l])) best = radius;
   }
   return best;
 }
@@ -346,7 +366,21 @@ TriQuality triangle_quality(Vec2 a, Vec2 b, Vec2 c) {
   return q;
 }
 
-TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+namespace {
+
+// Everything tetrahedron_quality computes except the minimal enclosing ball:
+// the quality with aspect_ratio left 0 (final when `flat`: the exact
+// orientation is Zero), the inradius r and the circumradius with its frame
+// (`has_frame` when det != 0).
+struct TetCore {
+  TetQuality q;
+  bool flat;
+  double r, circum;
+  CircumFrame frame;
+  bool has_frame;
+};
+
+TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   TetQuality q{};
   const Sign orientation = orient3d(a, b, c, d);
   const Vec3 u = b - a, v = c - a, w = d - a;
@@ -362,7 +396,7 @@ TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     q.min_dihedral_deg = 0.0;
     q.max_dihedral_deg = 180.0;
     q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
-    return q;
+    return {q, true, 0.0, kInf, {}, false};
   }
   // Dihedral angle i at the edge of faces k < l (pairs in loop order) is
   // pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i), y_i = |n_k x n_l|,
@@ -420,12 +454,41 @@ TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     circum = norm(frame.x);
   }
   const double shortest2 = std::min({norm2(u), norm2(v), norm2(w), norm2(c - b), norm2(d - b), norm2(d - c)});
-  // The circumsphere is one of the candidates, with the very same double value,
-  // so aspect_ratio <= sphere_ratio holds exactly in floating point too.
-  q.aspect_ratio = tet_enclosing_radius({a, b, c, d}, circum, det != 0.0 ? &frame : nullptr) / r;
   q.sphere_ratio = circum / r;
   q.radius_edge = circum / std::sqrt(shortest2);
+  return {q, false, r, circum, frame, det != 0.0};
+}
+
+}  // namespace
+
+TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const TetCore core = tet_core(a, b, c, d);
+  TetQuality q = core.q;
+  if (core.flat) return q;
+  // The circumsphere is one of the candidates, with the very same double value,
+  // so aspect_ratio <= sphere_ratio holds exactly in floating point too.
+  q.aspect_ratio = tet_enclosing_radius({a, b, c, d}, core.circum, core.has_frame ? &core.frame : nullptr) / core.r;
   return q;
+}
+
+TetShape tetrahedron_shape(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const TetCore core = tet_core(a, b, c, d);
+  TetShape s;
+  s.quality = core.q;
+  s.flat = core.flat;
+  if (core.flat) return s;
+  s.r = core.r;
+  const std::array<Vec3, 4> p = {a, b, c, d};
+  s.best_edges = enclosing_edge_stage(p, core.circum).best;
+  for (int l = 0; l < 4; ++l) {
+    const FaceBall ball = face_ball(p, l);
+    if (!ball.valid) continue;
+    const double radius = std::sqrt(ball.r2);
+    // best never exceeds best_edges: a ball not below it never wins (nor a NaN).
+    if (!(radius < s.best_edges)) continue;
+    s.balls[static_cast<std::size_t>(s.ball_count++)] = {ball.x, ball.r2, radius, (l + 1) % 4, l};
+  }
+  return s;
 }
 
 }  // namespace pqmesh
