@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mesh/check3d_stages.hpp"
+#include "mesh/radix_sort.hpp"
 #include "pqmesh/errors.hpp"
 
 namespace pqmesh::detail::check3d {
@@ -20,13 +21,31 @@ namespace {
 // that the facet was entered into.
 class FacetGrid {
  public:
+  // Cells per axis: as fine as 4 cbrt(nf) + 1 (at most 32) while the cell
+  // lists hold at most 64 nf + 2^16 entries in all, else coarser, down to
+  // cbrt(nf) + 1. Any resolution lists every facet whose box holds the point
+  // (cell() is monotone), in increasing id: only the number of facets asked
+  // about per point changes (a large facet's box covers a whole layer of
+  // cells, so finer cells separate parallel facets), never an answer.
   FacetGrid(const std::vector<FacetPlane>& planes, Vec3 lo, Vec3 hi) : lo_(lo) {
     const int nf = static_cast<int>(planes.size());
-    const int per_axis = std::clamp(static_cast<int>(std::cbrt(static_cast<double>(nf))) + 1, 1, 32);
+    const double root = std::cbrt(static_cast<double>(nf));
+    const int coarse = std::clamp(static_cast<int>(root) + 1, 1, 32);
+    const int fine = std::clamp(static_cast<int>(4 * root) + 1, coarse, 32);
     const double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
-    for (int a = 0; a < 3; ++a) {
-      n_[a] = ext[a] > 0 ? per_axis : 1;
-      scale_[a] = ext[a] > 0 ? n_[a] / ext[a] : 0;
+    const std::int64_t budget = 64 * std::int64_t{nf} + (std::int64_t{1} << 16);
+    for (int per_axis = fine; per_axis >= coarse; --per_axis) {
+      for (int a = 0; a < 3; ++a) {
+        n_[a] = ext[a] > 0 ? per_axis : 1;
+        scale_[a] = ext[a] > 0 ? n_[a] / ext[a] : 0;
+      }
+      std::int64_t items = 0;
+      for (int f = 0; f < nf; ++f) {
+        if (!planes[f].ok) continue;
+        const auto a = cell(planes[f].lo), b = cell(planes[f].hi);
+        items += std::int64_t{b[0] - a[0] + 1} * (b[1] - a[1] + 1) * (b[2] - a[2] + 1);
+      }
+      if (items <= budget) break;  // the coarsest is taken whatever its size
     }
     offset_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2] + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
@@ -171,24 +190,26 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
   const std::size_t nb = faces_.boundary.size();
   assigned_.assign(nb, -1);
   assigned_sign_.assign(nb, 0);
-  // on_facet_plane per (vertex, facet), remembered for the first two facets
-  // asked about each vertex (a boundary vertex is on about six boundary
-  // triangles, and on one facet, or two or three along an input edge or at a
-  // vertex); further facets are recomputed. A cache of the same exact answer.
-  struct PlaneMemo {
-    std::array<int, 2> facet{-1, -1};
-    std::array<bool, 2> on{};
-  };
-  std::vector<PlaneMemo> memo(m_.vertices.size());
+  // on_facet_plane per (vertex, facet), remembered for the first three
+  // facets asked about each vertex (a boundary vertex is on about six
+  // boundary triangles, each of which asks about every facet listed in the
+  // grid cell of its first vertex: the vertex's own facet or two or three
+  // along an input edge, plus nearby ones); further facets are recomputed.
+  // A cache of the same exact answer. Entries are 2 f + on, kNoEntry when
+  // unused (facet 2^31 - 1 on its plane would read as unused: merely not
+  // remembered): 12 bytes per vertex, as the two-entry memo had.
+  constexpr std::uint32_t kNoEntry = 0xffffffffu;
+  using PlaneMemo = std::array<std::uint32_t, 3>;
+  std::vector<PlaneMemo> memo(m_.vertices.size(), PlaneMemo{kNoEntry, kNoEntry, kNoEntry});
   auto on_plane = [&](int f, int v) {
     PlaneMemo& mm = memo[static_cast<std::size_t>(v)];
-    for (std::size_t k = 0; k < 2; ++k)
-      if (mm.facet[k] == f) return mm.on[k];
+    const auto fu = static_cast<std::uint32_t>(f);
+    for (const std::uint32_t e : mm)
+      if ((e >> 1) == fu && e != kNoEntry) return (e & 1u) != 0;
     const bool on = on_facet_plane(planes_[static_cast<std::size_t>(f)], m_.vertices[static_cast<std::size_t>(v)]);
-    for (std::size_t k = 0; k < 2; ++k)
-      if (mm.facet[k] < 0) {
-        mm.facet[k] = f;
-        mm.on[k] = on;
+    for (std::uint32_t& e : mm)
+      if (e == kNoEntry) {
+        e = (fu << 1) | static_cast<std::uint32_t>(on);
         break;
       }
     return on;
@@ -297,11 +318,16 @@ void Checker3::check_facets(const Domain3& d) {
     facet_checkable[f] = 1;
     recs.insert(recs.end(), mine.begin(), mine.end());
   }
-  std::sort(recs.begin(), recs.end(), [](const R& a, const R& b) {
-    if (a.facet != b.facet) return a.facet < b.facet;
-    if (a.lo != b.lo) return a.lo < b.lo;
-    return a.hi < b.hi;
-  });
+  // Order (facet, lo, hi); records with equal triples only add up their
+  // weights, so their order does not matter (all fields >= 0). Stable passes
+  // on (lo, hi) packed, then on the facet.
+  {
+    std::vector<R> scratch;
+    radix_sort_by_key(recs, scratch, [](const R& r) {
+      return (std::uint64_t{static_cast<std::uint32_t>(r.lo)} << 32) | static_cast<std::uint32_t>(r.hi);
+    });
+    radix_sort_by_key(recs, scratch, [](const R& r) { return std::uint64_t{static_cast<std::uint32_t>(r.facet)}; });
+  }
   for (std::size_t i = 0; i < recs.size();) {
     const int f = recs[i].facet;
     std::size_t j = i;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mesh/check3d_stages.hpp"
+#include "mesh/radix_sort.hpp"
 
 namespace pqmesh::detail::check3d {
 namespace {
@@ -51,6 +52,12 @@ constexpr int face_parity(int k) {
   return ((x > y) + (x > z) + (y > z)) % 2;  // inversions
 }
 static_assert(face_parity(0) == 0 && face_parity(1) == 1 && face_parity(2) == 0 && face_parity(3) == 1);
+
+constexpr std::uint32_t kEmptySlot = 0xffffffffu;
+
+// Hash-table slot of a packed face key (b << 32) | c: the high half of a
+// multiplicative (Fibonacci) hash, so that masking keeps well-mixed bits.
+inline std::size_t bc_slot(std::uint64_t bc) { return static_cast<std::size_t>((bc * 0x9e3779b97f4a7c15ull) >> 32); }
 
 }  // namespace
 
@@ -162,7 +169,9 @@ bool Checker3::stage3_faces() {
       filed[fill[ab[1]]++] = t;
     }
   }
-  std::vector<Rec> recs;
+  std::vector<Rec> recs, singles;
+  std::vector<std::uint32_t> slot;     // fast path: record index per table slot, or kEmptySlot
+  std::vector<unsigned char> paired;  // fast path: per record, its face met a second time
   for (int a = 0; a < nv; ++a) {
     recs.clear();
     // The tetrahedron sorted once, s0 < s1 < s2 < s3 (distinct: stage 2 found
@@ -190,6 +199,49 @@ bool Checker3::stage3_faces() {
         record(s[2], s[3], tu, parity);
       }
     }
+    const auto add_boundary = [&](const Rec& r) {
+      const bool odd = (r.code & 1u) != 0;
+      faces_.boundary.push_back(odd ? std::array<int, 3>{a, r.c(), r.b()} : std::array<int, 3>{a, r.b(), r.c()});
+      faces_.boundary_tet.push_back(static_cast<int>(r.code >> 1));
+    };
+    // Fast path: the records counted by (b, c) in a small open-addressing
+    // table (linear probing, at most half full). When every face of a is on
+    // one tetrahedron, or on two with opposite parities, the outcome is the
+    // single faces in increasing (b, c) order (sorted here; few), exactly
+    // what the sorted scan below gives. Anything else (a face on the same
+    // side of two tetrahedra, or on three or more) takes the sorted scan,
+    // which reports in (b, c, tetrahedron) order.
+    std::size_t cap = 16;
+    while (cap < 2 * recs.size()) cap *= 2;
+    if (slot.size() < cap) slot.resize(cap);
+    std::fill(slot.begin(), slot.begin() + static_cast<std::ptrdiff_t>(cap), kEmptySlot);
+    if (paired.size() < recs.size()) paired.resize(recs.size());
+    const std::size_t mask = cap - 1;
+    bool regular = true;
+    for (std::size_t i = 0; i < recs.size() && regular; ++i) {
+      std::size_t h = bc_slot(recs[i].bc) & mask;
+      while (slot[h] != kEmptySlot && recs[slot[h]].bc != recs[i].bc) h = (h + 1) & mask;
+      if (slot[h] == kEmptySlot) {
+        slot[h] = static_cast<std::uint32_t>(i);
+        paired[i] = 0;
+        continue;
+      }
+      const std::uint32_t j = slot[h];
+      if (paired[j] || ((recs[j].code ^ recs[i].code) & 1u) == 0) {
+        regular = false;
+      } else {
+        paired[j] = 1;
+        paired[i] = 1;
+      }
+    }
+    if (regular) {
+      singles.clear();
+      for (std::size_t i = 0; i < recs.size(); ++i)
+        if (!paired[i]) singles.push_back(recs[i]);
+      std::sort(singles.begin(), singles.end(), [](const Rec& x, const Rec& y) { return x.bc < y.bc; });
+      for (const Rec& r : singles) add_boundary(r);
+      continue;
+    }
     auto first = recs.begin(), last = recs.end();
     std::sort(first, last, [](const Rec& x, const Rec& y) { return x.bc != y.bc ? x.bc < y.bc : x.code < y.code; });
     for (auto it = first; it != last;) {
@@ -198,10 +250,7 @@ bool Checker3::stage3_faces() {
       const long count = run_end - it;
       const int face[3] = {a, it->b(), it->c()};
       if (count == 1) {
-        const bool odd = (it->code & 1u) != 0;
-        faces_.boundary.push_back(odd ? std::array<int, 3>{a, it->c(), it->b()}
-                                      : std::array<int, 3>{a, it->b(), it->c()});
-        faces_.boundary_tet.push_back(static_cast<int>(it->code >> 1));
+        add_boundary(*it);
       } else if (count == 2) {
         if ((it->code & 1u) == ((it + 1)->code & 1u)) {
           const int t1 = static_cast<int>(it->code >> 1), t2 = static_cast<int>((it + 1)->code >> 1);
@@ -224,6 +273,9 @@ bool Checker3::stage3_faces() {
     }
   }
   std::vector<Rec>().swap(recs);
+  std::vector<Rec>().swap(singles);
+  std::vector<std::uint32_t>().swap(slot);
+  std::vector<unsigned char>().swap(paired);
   std::vector<int>().swap(filed);
   std::vector<int>().swap(start);
   rep_.boundary_faces = static_cast<std::int64_t>(faces_.boundary.size());
@@ -250,10 +302,11 @@ void Checker3::build_boundary_edges() {
       const int x = f[k], y = f[(k + 1) % 3];
       bedges_.push_back(x < y ? BEdge{x, y, 1} : BEdge{y, x, 0});
     }
-  std::sort(bedges_.begin(), bedges_.end(), [](const BEdge& a, const BEdge& b) {
-    if (a.lo != b.lo) return a.lo < b.lo;
-    if (a.hi != b.hi) return a.hi < b.hi;
-    return a.forward < b.forward;
+  // Order (lo, hi, forward): ids >= 0 after stage 1, so the packed key
+  // lo * 2^33 + hi * 2^1 + forward (ids < 2^31) orders like the triple.
+  radix_sort_by_key(bedges_, [](const BEdge& e) {
+    return (std::uint64_t{static_cast<std::uint32_t>(e.lo)} << 33) |
+           (std::uint64_t{static_cast<std::uint32_t>(e.hi)} << 1) | static_cast<std::uint64_t>(e.forward);
   });
   std::vector<std::array<int, 2>> unique;
   for (std::size_t i = 0; i < bedges_.size(); ++i)
@@ -332,16 +385,19 @@ void Checker3::check_listed_faces() {
     const int parity = sort_with_parity(x);
     return K{x, parity, source};
   };
-  std::vector<K> keys;
-  for (std::size_t i = 0; i < faces_.boundary.size(); ++i) keys.push_back(key(faces_.boundary[i], -1 - static_cast<int>(i)));
+  // Order: sorted triple, then source (the boundary face, negative, first;
+  // listed faces by index). The keys are made in increasing source order
+  // (boundary faces from the last one, then the listed ones) and sorted
+  // stably on v[2], then v[1], then v[0] (ids >= 0 after stage 1).
+  std::vector<K> keys, scratch;
+  keys.reserve(faces_.boundary.size() + m_.faces.size());
+  for (std::size_t i = faces_.boundary.size(); i-- > 0;) keys.push_back(key(faces_.boundary[i], -1 - static_cast<int>(i)));
   for (std::size_t i = 0; i < m_.faces.size(); ++i) keys.push_back(key(m_.faces[i], static_cast<int>(i)));
   // Compared element by element (std::array's == and < call memcmp here).
   const auto same = [](const K& a, const K& b) { return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2]; };
-  std::sort(keys.begin(), keys.end(), [](const K& a, const K& b) {
-    for (int k = 0; k < 3; ++k)
-      if (a.v[k] != b.v[k]) return a.v[k] < b.v[k];
-    return a.source < b.source;  // the boundary face (negative) first
-  });
+  for (int k = 2; k >= 0; --k)
+    radix_sort_by_key(keys, scratch, [k](const K& x) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x.v[k])); });
+  std::vector<K>().swap(scratch);
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i;
     while (j < keys.size() && same(keys[j], keys[i])) ++j;

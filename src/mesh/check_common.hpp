@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/large_page_allocator.hpp"
+#include "mesh/radix_sort.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/vec.hpp"
 
@@ -55,8 +56,10 @@ bool coord_less(const V& a, const V& b) {
   }
 }
 
+// The order of sort_by_coordinates by comparisons (the reference; used when a
+// coordinate is NaN, where ordered_key has no meaning).
 template <class V>
-std::vector<int> sort_by_coordinates(const std::vector<V>& points) {
+std::vector<int> sort_by_coordinates_compared(const std::vector<V>& points) {
   std::vector<int> order(points.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -64,6 +67,41 @@ std::vector<int> sort_by_coordinates(const std::vector<V>& points) {
     if (coord_less(points[b], points[a])) return false;
     return a < b;
   });
+  return order;
+}
+
+// Ties (equal coordinates; -0.0 == +0.0) by id. The coordinates' ordered
+// keys (mesh/radix_sort.hpp) and the id are copied next to each other and
+// sorted as integer tuples: the same order as the comparison above, without
+// reading the points from the comparator. (Measured on plate_holes, 287,615
+// vertices: fewer instructions than both the indirect comparison sort and
+// three stable radix passes.)
+template <class V>
+std::vector<int> sort_by_coordinates(const std::vector<V>& points) {
+  for (const V& p : points) {
+    bool nan = p.x != p.x || p.y != p.y;
+    if constexpr (requires { p.z; }) nan = nan || p.z != p.z;
+    if (nan) return sort_by_coordinates_compared(points);
+  }
+  struct Item {
+    std::uint64_t x, y, z;
+    int id;
+  };
+  std::vector<Item> items(points.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const V& p = points[i];
+    std::uint64_t z = 0;
+    if constexpr (requires { p.z; }) z = ordered_key(p.z);
+    items[i] = {ordered_key(p.x), ordered_key(p.y), z, static_cast<int>(i)};
+  }
+  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    if (a.z != b.z) return a.z < b.z;
+    return a.id < b.id;
+  });
+  std::vector<int> order(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].id;
   return order;
 }
 

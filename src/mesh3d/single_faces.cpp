@@ -42,12 +42,18 @@ std::array<int, 3> sorted3(std::array<int, 3> f) {
   return f;
 }
 
+constexpr std::uint32_t kEmpty = 0xffffffffu;
+
+// Table slot of a packed (b, c) key: the high bits of a multiplicative hash
+// (Fibonacci hashing) folded to the low end, so masking keeps good bits.
+inline std::size_t slot_hash(std::uint64_t bc) {
+  const std::uint64_t h = bc * 0x9e3779b97f4a7c15ull;
+  return static_cast<std::size_t>(h >> 32);
+}
+
 struct FiledFace {
   std::uint64_t bc;   // (b << 32) | c: the other two vertex ids, b <= c (ids >= 0)
   std::int64_t code;  // 4 t + i
-  friend bool operator<(const FiledFace& x, const FiledFace& y) {
-    return x.bc != y.bc ? x.bc < y.bc : x.code < y.code;
-  }
 };
 
 FiledFace filed_face(int b, int c, std::int64_t code) {
@@ -99,6 +105,8 @@ std::vector<std::int64_t> single_faces(const std::vector<std::array<int, 4>>& te
   }
   std::vector<std::int64_t> singles;
   std::vector<FiledFace> here;
+  std::vector<std::uint32_t> slot;  // record index per table slot, or kEmpty
+  std::vector<unsigned char> seen;  // per record: 1 alone so far, 2 shared
   for (std::size_t v = 0; v < nv; ++v) {
     here.clear();
     for (std::size_t j = offset[v]; j < offset[v + 1]; ++j) {
@@ -126,13 +134,29 @@ std::vector<std::int64_t> single_faces(const std::vector<std::array<int, 4>>& te
         if (f[0] == static_cast<int>(v)) here.push_back(filed_face(f[1], f[2], static_cast<std::int64_t>(4 * t) + i));
       }
     }
-    std::sort(here.begin(), here.end());
-    for (std::size_t i = 0; i < here.size();) {
-      std::size_t j = i + 1;
-      while (j < here.size() && here[j].bc == here[i].bc) ++j;
-      if (j == i + 1) singles.push_back(here[i].code);
-      i = j;
+    // A face is single when no other record of v has its (b, c): counted in
+    // a small open-addressing table keyed by bc (linear probing, at most half
+    // full), cleared per vertex. The order does not matter here: singles are
+    // sorted at the end.
+    if (seen.size() < here.size()) seen.resize(here.size());
+    std::size_t cap = 16;
+    while (cap < 2 * here.size()) cap *= 2;
+    if (slot.size() < cap) slot.resize(cap);
+    std::fill(slot.begin(), slot.begin() + static_cast<std::ptrdiff_t>(cap), kEmpty);
+    const std::size_t mask = cap - 1;
+    for (std::size_t i = 0; i < here.size(); ++i) {
+      std::size_t h = slot_hash(here[i].bc) & mask;
+      while (slot[h] != kEmpty && here[slot[h]].bc != here[i].bc) h = (h + 1) & mask;
+      if (slot[h] == kEmpty) {
+        slot[h] = static_cast<std::uint32_t>(i);
+        seen[i] = 1;
+      } else {
+        seen[slot[h]] = 2;  // the first record of the face now has company
+        seen[i] = 2;
+      }
     }
+    for (std::size_t i = 0; i < here.size(); ++i)
+      if (seen[i] == 1) singles.push_back(here[i].code);
   }
   std::sort(singles.begin(), singles.end());
   return singles;

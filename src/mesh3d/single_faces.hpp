@@ -8,8 +8,9 @@
 // vertex ids m1 < m2 < m3 < m4 the three faces through m1 have smallest
 // vertex m1 and the fourth face (m2, m3, m4) has m2, so the tetrahedron is
 // listed under m1 and m2 only (a counting sort, two entries per tetrahedron).
-// Then, vertex by vertex, the faces filed under it are sorted by their other
-// two ids (a few dozen per vertex) and the faces met once are kept.
+// Then, vertex by vertex, the faces filed under it (a few dozen) are counted
+// by their other two ids in a small hash table and the faces met once are
+// kept; the result is sorted once at the end.
 // A tetrahedron with a repeated vertex id is filed under its smallest id and
 // each of its faces is compared like any other (never single with itself).
 #include <array>
