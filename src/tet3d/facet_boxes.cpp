@@ -157,8 +157,17 @@ class Assembler {
     const VertexKey vk{VertexKind::EdgeMidpoint, key_centre(key), {}, edge};
     const int v = book_.id(vk, [&] { return apex_on_edge(tris, a, b, ends, mid, t0, t1); });
     ++out_.stats.edge;
-    if (!(worst_cone(tris, book_.point(v)) < std::numeric_limits<double>::infinity()) && two_apex_box(leaf, tris, v)) {
+    // A non-positive cone (a warp pushed a face past E): two cone points or,
+    // failing that, the rebuild loop; flat cones: two cone points only when
+    // strictly better (two_apex_box, flat_two_apex_box).
+    const double single = worst_cone(tris, book_.point(v));
+    const bool positive = single < std::numeric_limits<double>::infinity();
+    if (!positive && two_apex_box(leaf, tris, v)) {
       ++out_.stats.edge_two_apex;
+      return;
+    }
+    if (positive && single > kFlatCone && flat_two_apex_box(leaf, tris, v, single)) {
+      ++out_.stats.edge_two_apex_flat;
       return;
     }
     for (const Tri& t : tris) cone(leaf, t, v);
@@ -191,20 +200,79 @@ class Assembler {
   // off for this pass (allow_two_apex; two_apex_points() records the box
   // vertices of a box that had a valid one, mesh_boxes).
   bool two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v) {
-    const BoxKey<3>& key = tree_.key(leaf);
-    const std::int64_t q = key.fine_side() / 4;
-    if (q * 4 != key.fine_side()) return false;
-    constexpr double kInf = std::numeric_limits<double>::infinity();
+    std::vector<char> far0(tris.size(), 0);
+    for (std::size_t n = 0; n < tris.size(); ++n) far0[n] = seen(tris[n], book_.point(v)) ? 0 : 1;
+    const TwoApex best = best_two_apex(leaf, tris, v, far0);
+    if (!(best.shape < std::numeric_limits<double>::infinity())) return false;
+    for (const Tri& t : tris)
+      for (const int id : t)
+        if (book_.key(id).kind == VertexKind::Grid || book_.key(id).kind == VertexKind::Warped)
+          two_apex_points_.push_back(book_.key(id).p);
+    if (!two_apex_) return false;
+    make_two_apex(leaf, tris, v, best);
+    return true;
+  }
+
+  // An edge box whose apex v on E sees every face triangle, but some of its
+  // cones are flat (worst tet_shape `single` above kFlatCone; our
+  // construction, docs/ALGORITHM.md §12.5 "flat cones from two points"): E
+  // runs within a few thousandths of h of a box face (or a face warped
+  // towards it), so v, on E, lies almost in that face's plane (bounded seed
+  // 167: apex 0.00015 h from the face triangle through E's own crossing;
+  // seed 172: 0.00026 h from a face frozen on the grid). The same two-point
+  // construction as two_apex_box, with the far set S' seeded by the k face
+  // triangles with the worst cones from v (k = 1 .. all, ties in triangle
+  // order) and grown until every rim tetrahedron is positive; among every
+  // seed and every w, the best worst tet_shape over the box wins (the first
+  // on ties), and it is taken only if strictly better than `single`. Every
+  // tetrahedron is positive by exact orient3d (w sees S', v sees the rest
+  // and every rim tetrahedron is checked), so the rebuild loop never reacts
+  // to it; floats only choose between valid constructions. Not recorded in
+  // two_apex_points() (that list decides mesh_boxes' second run).
+  bool flat_two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v, double single) {
     const Vec3 V = book_.point(v);
-    auto seen = [&](const Tri& t, Vec3 apex) {
-      return orient3d(book_.point(t[0]), book_.point(t[2]), book_.point(t[1]), apex) == Sign::Positive;
-    };
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t n = 0; n < tris.size(); ++n)
+      order.push_back({tet_shape(book_.point(tris[n][0]), book_.point(tris[n][2]), book_.point(tris[n][1]), V), n});
+    std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    TwoApex best;
+    std::vector<char> far0(tris.size(), 0);
+    for (const auto& [shape, n] : order) {
+      far0[n] = 1;
+      const TwoApex c = best_two_apex(leaf, tris, v, far0);
+      if (c.shape < best.shape) best = c;
+    }
+    if (!(best.shape < single)) return false;
+    make_two_apex(leaf, tris, v, best);
+    return true;
+  }
+
+  // Edge boxes whose worst single-apex cone is flatter than this (tet_shape,
+  // about twice the aspect ratio) try flat_two_apex_box. A float threshold
+  // that only decides whether to look for another valid construction.
+  static constexpr double kFlatCone = 4096;
+
+  bool seen(const Tri& t, Vec3 apex) const {
+    return orient3d(book_.point(t[0]), book_.point(t[2]), book_.point(t[1]), apex) == Sign::Positive;
+  }
+
+  // The best two-point construction for far-set seed far0 (see two_apex_box):
+  // shape +infinity when no candidate w is valid.
+  struct TwoApex {
+    double shape = std::numeric_limits<double>::infinity();
+    GridPoint w{};
+    std::vector<char> far;
+  };
+  TwoApex best_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v, const std::vector<char>& far0) {
+    const BoxKey<3>& key = tree_.key(leaf);
+    TwoApex best;
+    const std::int64_t q = key.fine_side() / 4;
+    if (q * 4 != key.fine_side()) return best;
+    const Vec3 V = book_.point(v);
     // Directed edge -> its face triangle (each directed edge is in one).
     std::map<std::pair<int, int>, std::size_t> owner;
     for (std::size_t n = 0; n < tris.size(); ++n)
       for (std::size_t k = 0; k < 3; ++k) owner.emplace(std::pair{tris[n][k], tris[n][(k + 1) % 3]}, n);
-    std::vector<char> far0(tris.size(), 0);
-    for (std::size_t n = 0; n < tris.size(); ++n) far0[n] = seen(tris[n], V) ? 0 : 1;
     // The far set grown for w (empty when w is rejected).
     auto grow = [&](Vec3 W) {
       std::vector<char> far = far0;
@@ -227,20 +295,7 @@ class Assembler {
       }
       return far;
     };
-    auto rim_of = [&](const std::vector<char>& far) {
-      std::vector<std::pair<int, int>> rim;
-      for (std::size_t n = 0; n < tris.size(); ++n)
-        if (far[n])
-          for (std::size_t k = 0; k < 3; ++k) {
-            const int x = tris[n][k], y = tris[n][(k + 1) % 3];
-            const auto across = owner.find({y, x});
-            if (across == owner.end() || !far[across->second]) rim.push_back({x, y});
-          }
-      return rim;
-    };
     const GridPoint lo = key_corner(key, 0);
-    double best_shape = kInf;
-    GridPoint best{};
     for (std::int64_t i = 1; i <= 3; ++i)
       for (std::int64_t j = 1; j <= 3; ++j)
         for (std::int64_t k = 1; k <= 3; ++k) {
@@ -249,31 +304,46 @@ class Assembler {
           g.f[1] += j * q;
           g.f[2] += k * q;
           const Vec3 W = grid_coordinates(tree_, g);
-          const std::vector<char> far = grow(W);
+          std::vector<char> far = grow(W);
           if (far.empty()) continue;
           double s = 0;
           for (std::size_t n = 0; n < tris.size(); ++n) {
             const Vec3 x = book_.point(tris[n][0]), y = book_.point(tris[n][2]), z = book_.point(tris[n][1]);
             s = std::max(s, tet_shape(x, y, z, far[n] ? W : V));
           }
-          for (const auto& [x, y] : rim_of(far)) s = std::max(s, tet_shape(book_.point(x), W, book_.point(y), V));
-          if (s < best_shape) {
-            best_shape = s;
-            best = g;
-          }
+          for (const auto& [x, y] : rim_of(tris, owner, far))
+            s = std::max(s, tet_shape(book_.point(x), W, book_.point(y), V));
+          if (s < best.shape) best = {s, g, std::move(far)};
         }
-    if (!(best_shape < kInf)) return false;
-    for (const Tri& t : tris)
-      for (const int id : t)
-        if (book_.key(id).kind == VertexKind::Grid || book_.key(id).kind == VertexKind::Warped)
-          two_apex_points_.push_back(book_.key(id).p);
-    if (!two_apex_) return false;
-    // An interior grid point of the leaf: no other box has it, never warped.
-    const int w = centre_vertex(best);
-    const std::vector<char> far = grow(book_.point(w));
-    for (std::size_t n = 0; n < tris.size(); ++n) cone(leaf, tris[n], far[n] ? w : v);
-    for (const auto& [x, y] : rim_of(far)) tet(leaf, "rim", x, w, y, v);
-    return true;
+    return best;
+  }
+
+  // The rim of far set `far`: edges a -> b of its triangles whose reverse is
+  // in no triangle of the set.
+  static std::vector<std::pair<int, int>> rim_of(const std::vector<Tri>& tris,
+                                                 const std::map<std::pair<int, int>, std::size_t>& owner,
+                                                 const std::vector<char>& far) {
+    std::vector<std::pair<int, int>> rim;
+    for (std::size_t n = 0; n < tris.size(); ++n)
+      if (far[n])
+        for (std::size_t k = 0; k < 3; ++k) {
+          const int x = tris[n][k], y = tris[n][(k + 1) % 3];
+          const auto across = owner.find({y, x});
+          if (across == owner.end() || !far[across->second]) rim.push_back({x, y});
+        }
+    return rim;
+  }
+
+  // The tetrahedra of a two-point construction: cones from w over S', from v
+  // over the rest, (a, w, b, v) over the rim. w is an interior grid point of
+  // the leaf: no other box has it, never warped.
+  void make_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v, const TwoApex& c) {
+    const int w = centre_vertex(c.w);
+    std::map<std::pair<int, int>, std::size_t> owner;
+    for (std::size_t n = 0; n < tris.size(); ++n)
+      for (std::size_t k = 0; k < 3; ++k) owner.emplace(std::pair{tris[n][k], tris[n][(k + 1) % 3]}, n);
+    for (std::size_t n = 0; n < tris.size(); ++n) cone(leaf, tris[n], c.far[n] ? w : v);
+    for (const auto& [x, y] : rim_of(tris, owner, c.far)) tet(leaf, "rim", x, w, y, v);
   }
 
   // The apex on E (our choice within §4.5.3): the midpoint of E ∩ I(b),

@@ -83,6 +83,7 @@ struct FacetBoxStats {
   std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
   std::int64_t edge_apex_moved = 0;  // edge boxes whose apex is not E's midpoint (facet_boxes.cpp apex_on_edge)
   std::int64_t edge_two_apex = 0;  // edge boxes coned from v on E and a second point (facet_boxes.cpp two_apex_box)
+  std::int64_t edge_two_apex_flat = 0;  // the same, where v's cones were flat (facet_boxes.cpp flat_two_apex_box)
   std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
   std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
   // Two-facet boxes coned from the facet whose plane is farther from the
