@@ -55,6 +55,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <iterator>
 #include <numeric>
 
 #include "mv3d/perturbed.hpp"
@@ -166,7 +167,7 @@ int edge_index(const Domain3& dom, int a, int b) {
 }
 
 // Fills the face lists of every component from the local triangle -> component map.
-void fill_faces(const Domain3& dom, const Cube& c, const std::vector<int>& tris, const std::vector<int>& comp_of,
+void fill_faces(const Domain3& dom, const Cube& c, std::span<const int> tris, const std::vector<int>& comp_of,
                 CubeComponents& out) {
   std::vector<std::pair<std::array<int, 2>, int>> sides;
   for (std::size_t i = 0; i < tris.size(); ++i) {
@@ -197,6 +198,35 @@ void fill_faces(const Domain3& dom, const Cube& c, const std::vector<int>& tris,
     }
   }
   std::sort(out.triangle_component.begin(), out.triangle_component.end());
+}
+
+// Step 3: joins the local triangles (union-find elements 0..m-1) of every
+// sheet, a component of ∂P ∩ C: two triangles' pieces in C_e share a point iff
+// they share a vertex in C or a side meeting C_e (cube_components.cpp outline).
+void join_sheets(const Domain3& domain, const Cube& cube, std::span<const int> tris, UnionFind& uf) {
+  const std::size_t m = tris.size();
+  std::vector<std::pair<int, int>> at_vertex;                   // (vertex in C, local triangle)
+  std::vector<std::pair<std::array<int, 2>, int>> at_side;      // (side, local triangle), sides with no vertex in C
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto& tri = domain.facet_triangles[static_cast<std::size_t>(tris[i])];
+    for (int j = 0; j < 3; ++j) {
+      const int v = tri[static_cast<std::size_t>(j)], w = tri[static_cast<std::size_t>((j + 1) % 3)];
+      const bool vin = vertex_inside(domain.plc.vertices[static_cast<std::size_t>(v)], cube);
+      const bool win = vertex_inside(domain.plc.vertices[static_cast<std::size_t>(w)], cube);
+      if (vin) at_vertex.push_back({v, static_cast<int>(i)});
+      if (!vin && !win) at_side.push_back({{std::min(v, w), std::max(v, w)}, static_cast<int>(i)});
+    }
+  }
+  std::sort(at_vertex.begin(), at_vertex.end());
+  for (std::size_t k = 1; k < at_vertex.size(); ++k)
+    if (at_vertex[k].first == at_vertex[k - 1].first) uf.unite(at_vertex[k].second, at_vertex[k - 1].second);
+  std::sort(at_side.begin(), at_side.end());
+  for (std::size_t k = 1; k < at_side.size(); ++k) {
+    if (at_side[k].first != at_side[k - 1].first) continue;
+    const auto& s = at_side[k].first;
+    if (segment_meets(domain.plc.vertices[static_cast<std::size_t>(s[0])], domain.plc.vertices[static_cast<std::size_t>(s[1])], cube))
+      uf.unite(at_side[k].second, at_side[k - 1].second);
+  }
 }
 
 // Step 2: a vertex in C common to every facet meeting C, or -1.
@@ -261,24 +291,16 @@ bool single_cone(const Domain3& dom, const Cube& c, const std::vector<int>& tris
 
 }  // namespace
 
-std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates) {
+std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, std::span<const int> candidates,
+                                   std::span<const int> known) {
   EdgeLines edge_lines(cube);
   std::vector<int> out;
   for (const int t : candidates)
-    if (triangle_meets(domain, t, cube, edge_lines)) out.push_back(t);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates,
-                                   const std::vector<int>& known) {
-  EdgeLines edge_lines(cube);
-  std::vector<int> out;
-  for (const int t : candidates)
-    if (std::binary_search(known.begin(), known.end(), t) || triangle_meets(domain, t, cube, edge_lines))
+    if ((!known.empty() && std::binary_search(known.begin(), known.end(), t)) ||
+        triangle_meets(domain, t, cube, edge_lines))
       out.push_back(t);
-  std::sort(out.begin(), out.end());
+  // Candidate lists handed down the tree are sorted and unique already.
+  if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
@@ -317,6 +339,32 @@ bool corner0_in_walk(const Domain3& domain, const Cube& to, const Cube& from, bo
   return walk_status(domain, tris, corner_point(from, 0), from_corner0_in, corner_point(to, 0));
 }
 
+FaceBounds face_bounds(const Domain3& domain, const Cube& cube, std::span<const int> tris, int t) {
+  const auto it = std::lower_bound(tris.begin(), tris.end(), t);
+  if (it == tris.end() || *it != t) throw InternalError("mv3d: face_bounds' triangle does not meet the box");
+  const std::size_t m = tris.size();
+  UnionFind uf;
+  for (std::size_t i = 0; i < m; ++i) uf.add();
+  join_sheets(domain, cube, tris, uf);
+  // Two groups: 0 = t's sheet, 1 = every other triangle.
+  const int root = uf.find(static_cast<int>(it - tris.begin()));
+  std::vector<int> group(m);
+  for (std::size_t i = 0; i < m; ++i) group[i] = uf.find(static_cast<int>(i)) == root ? 0 : 1;
+  CubeComponents cc;
+  cc.components.resize(2);
+  fill_faces(domain, cube, tris, group, cc);
+  FaceBounds out;
+  out.sheet = std::move(cc.components[0]);
+  const ComponentFaces3& rest = cc.components[1];
+  const auto merge = [](const std::vector<int>& a, const std::vector<int>& b, std::vector<int>& to) {
+    std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(to));
+  };
+  merge(out.sheet.vertices, rest.vertices, out.all.vertices);
+  merge(out.sheet.edges, rest.edges, out.all.edges);
+  merge(out.sheet.facets, rest.facets, out.all.facets);
+  return out;
+}
+
 CubeComponents components(const Domain3& domain, const Cube& cube, bool allow_fast_path, std::span<const Vec3> marks) {
   std::vector<int> all(domain.facet_triangles.size());
   std::iota(all.begin(), all.end(), 0);
@@ -330,7 +378,7 @@ CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHin
   out.cube = cube;
   std::vector<int> tris;
   if (hint.candidates_exact) tris.assign(hint.candidates.begin(), hint.candidates.end());
-  else tris = triangles_meeting(domain, cube, std::vector<int>(hint.candidates.begin(), hint.candidates.end()));
+  else tris = triangles_meeting(domain, cube, hint.candidates);
   if (tris.empty()) {
     // No P face meets C_e: C_e lies in int P or in its exterior, as its
     // corner 0 does.
@@ -361,30 +409,7 @@ CubeComponents components(const Domain3& domain, const Cube& cube, const CubeHin
   // Step 3: sheets. Union-find elements 0..m-1 are the local triangles.
   UnionFind uf;
   for (std::size_t i = 0; i < m; ++i) uf.add();
-  {
-    std::vector<std::pair<int, int>> at_vertex;                   // (vertex in C, local triangle)
-    std::vector<std::pair<std::array<int, 2>, int>> at_side;      // (side, local triangle), sides with no vertex in C
-    for (std::size_t i = 0; i < m; ++i) {
-      const auto& tri = domain.facet_triangles[static_cast<std::size_t>(tris[i])];
-      for (int j = 0; j < 3; ++j) {
-        const int v = tri[static_cast<std::size_t>(j)], w = tri[static_cast<std::size_t>((j + 1) % 3)];
-        const bool vin = vertex_inside(domain.plc.vertices[static_cast<std::size_t>(v)], cube);
-        const bool win = vertex_inside(domain.plc.vertices[static_cast<std::size_t>(w)], cube);
-        if (vin) at_vertex.push_back({v, static_cast<int>(i)});
-        if (!vin && !win) at_side.push_back({{std::min(v, w), std::max(v, w)}, static_cast<int>(i)});
-      }
-    }
-    std::sort(at_vertex.begin(), at_vertex.end());
-    for (std::size_t k = 1; k < at_vertex.size(); ++k)
-      if (at_vertex[k].first == at_vertex[k - 1].first) uf.unite(at_vertex[k].second, at_vertex[k - 1].second);
-    std::sort(at_side.begin(), at_side.end());
-    for (std::size_t k = 1; k < at_side.size(); ++k) {
-      if (at_side[k].first != at_side[k - 1].first) continue;
-      const auto& s = at_side[k].first;
-      if (segment_meets(domain.plc.vertices[static_cast<std::size_t>(s[0])], domain.plc.vertices[static_cast<std::size_t>(s[1])], cube))
-        uf.unite(at_side[k].second, at_side[k - 1].second);
-    }
-  }
+  join_sheets(domain, cube, tris, uf);
   std::vector<int> sheet(m);
   for (std::size_t i = 0; i < m; ++i) sheet[i] = uf.find(static_cast<int>(i));
 

@@ -77,12 +77,11 @@ struct CubeComponents {
 // Facet triangles (indices into Domain3::facet_triangles) meeting the closed
 // (shifted) box, sorted.
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube);
-// The same, restricted to candidates (e.g. the parent box's list).
-std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates);
-// The same when `known` (sorted, a subset of candidates) is known to meet the
-// box, e.g. the triangles meeting a box inside it: those are not tested again.
-std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, const std::vector<int>& candidates,
-                                   const std::vector<int>& known);
+// The same, restricted to candidates (e.g. the parent box's list). Triangles
+// of `known` (sorted, a subset of candidates) are known to meet the box, e.g.
+// those meeting a box inside it, and are not tested again.
+std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, std::span<const int> candidates,
+                                   std::span<const int> known = {});
 
 // What a caller that already knows the neighbourhood of C hands down (issue 4
 // item 7: candidate lists passed down the tree, ex(child) ⊂ ex(parent)), so
@@ -108,6 +107,20 @@ bool corner0_in_from(const Domain3& domain, const Cube& inner, const Cube& outer
 // parent's list). Cost O(|tris|) per coordinate that differs.
 bool corner0_in_walk(const Domain3& domain, const Cube& to, const Cube& from, bool from_corner0_in,
                      std::span<const int> tris);
+
+// Bounds on the faces of the component of P ∩ C holding facet triangle t,
+// without the walks of components() (steps 1-3 and the face lists only):
+// `all` lists the faces of every facet triangle meeting C (a superset of any
+// component's faces), `sheet` those of the sheet holding t, the component of
+// ∂P ∩ C that t's piece lies in (a subset of t's component's faces: a
+// component is a union of sheets). Faces as in ComponentFaces3 (vertices in
+// C, P edges meeting C, facets). A test that some face "interferes" is then
+// decided without components() when `all` has none or `sheet` has one.
+// tris: exactly the facet triangles meeting C_e, sorted; t among them.
+struct FaceBounds {
+  ComponentFaces3 all, sheet;
+};
+FaceBounds face_bounds(const Domain3& domain, const Cube& cube, std::span<const int> tris, int t);
 
 // Components of P ∩ C. Cost: O(c) to select the m triangles meeting C among
 // the c candidates, then, off the fast path, O(m k) for the k probe lines

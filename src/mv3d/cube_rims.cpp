@@ -245,7 +245,7 @@ DuplicateAdjacency adjacent_duplicates(const Domain3& domain, const Cube& big, c
   const Rect r{a, out.value, axis_coord(small.lo, ua), axis_coord(small.hi, ua), axis_coord(small.lo, va), axis_coord(small.hi, va)};
   // Every triangle with a trace crossing the open rectangle meets both closed cubes.
   const std::vector<int> tris =
-      small_hint ? triangles_meeting(domain, small, std::vector<int>(small_hint->candidates.begin(), small_hint->candidates.end()))
+      small_hint ? triangles_meeting(domain, small, small_hint->candidates)
                  : triangles_meeting(domain, small);
   const Sampling s = sample_rect(domain, tris, r);
   out.unresolved = s.unresolved;

@@ -454,6 +454,24 @@ bool OctreeBuilder::size_crowded(std::int32_t node) const {
   return tree_.side(node) > size_over(cube(node));
 }
 
+// The crowding tests below ask whether some face of P ∧ ex(b) interferes.
+// face_bounds brackets the faces of P ∧ ex(b) between those of the sheet
+// holding rep_triangle (a part of P ∧ ex(b)) and those of every triangle
+// meeting ex(b): the rule's answer on the two bounds decides it when they
+// agree; only the rest computes (and caches) the components of P ∩ ex(b).
+// A cached result is used directly.
+template <class Rule>
+bool OctreeBuilder::extended_interferes(std::int32_t node, const Rule& rule) const {
+  const NodeData3& d = data(node);
+  const bool cached = static_cast<std::size_t>(node) < ex_cache_.size() && ex_cache_[static_cast<std::size_t>(node)];
+  if (!cached && !d.ex_tris.empty() && d.rep_triangle >= 0) {
+    const FaceBounds fb = face_bounds(domain_, ex_cube(node), d.ex_tris, d.rep_triangle);
+    if (!rule(fb.all)) return false;
+    if (rule(fb.sheet)) return true;
+  }
+  return rule(extended_faces(node));
+}
+
 // Thesis §4.1.3 "Vertex crowded": b holds a P vertex v and P ∧ ex(b) has a face
 // that interferes with v (is not v nor a superface of v).
 bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
@@ -461,15 +479,16 @@ bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
   if (d.vertices.empty()) return false;
   if (d.vertices.size() > 1) return true;
   const int v = d.vertices[0];
-  const ExtendedFaces3 ex = extended_faces(node);
-  if (ex.vertices.size() > 1) return true;
-  for (const int e : ex.edges) {
-    const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
-    if (de.a != v && de.b != v) return true;
-  }
-  for (const int f : ex.facets)
-    if (!facet_has_vertex(f, v)) return true;
-  return false;
+  return extended_interferes(node, [&](const auto& ex) {
+    if (ex.vertices.size() > 1) return true;
+    for (const int e : ex.edges) {
+      const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
+      if (de.a != v && de.b != v) return true;
+    }
+    for (const int f : ex.facets)
+      if (!facet_has_vertex(f, v)) return true;
+    return false;
+  });
 }
 
 // Thesis §4.1.4 "Edge crowded": b (unprotected, no vertex, outside every united
@@ -486,19 +505,20 @@ bool OctreeBuilder::edge_crowded(std::int32_t node) const {
   // one sharing a vertex with the other meets P ∧ b itself.
   if (d.edges.size() > 1) return true;
   const DomainEdge& e = domain_.edges[static_cast<std::size_t>(d.edges[0])];
-  const ExtendedFaces3 ex = extended_faces(node);
-  for (const int g : ex.edges) {
-    if (g == d.edges[0]) continue;
-    const DomainEdge& ge = domain_.edges[static_cast<std::size_t>(g)];
-    const bool shares = ge.a == e.a || ge.a == e.b || ge.b == e.a || ge.b == e.b;
-    if (!shares) return true;
-  }
-  for (const int f : ex.facets) {
-    if (f == e.facets[0] || f == e.facets[1]) continue;
-    const bool shares = facet_has_vertex(f, e.a) || facet_has_vertex(f, e.b);
-    if (!shares || contains(d.facets, f)) return true;
-  }
-  return false;
+  return extended_interferes(node, [&](const auto& ex) {
+    for (const int g : ex.edges) {
+      if (g == d.edges[0]) continue;
+      const DomainEdge& ge = domain_.edges[static_cast<std::size_t>(g)];
+      const bool shares = ge.a == e.a || ge.a == e.b || ge.b == e.a || ge.b == e.b;
+      if (!shares) return true;
+    }
+    for (const int f : ex.facets) {
+      if (f == e.facets[0] || f == e.facets[1]) continue;
+      const bool shares = facet_has_vertex(f, e.a) || facet_has_vertex(f, e.b);
+      if (!shares || contains(d.facets, f)) return true;
+    }
+    return false;
+  });
 }
 
 // Thesis §4.1.5 "Facet crowded": b (unprotected: no vertex, no edge, outside
@@ -511,12 +531,14 @@ bool OctreeBuilder::facet_crowded(std::int32_t node) const {
   if (!d.vertices.empty() || !d.edges.empty() || d.facets.empty() || d.vertex_owner >= 0) return false;
   if (d.facets.size() > 1) return true;
   const int f = d.facets[0];
-  const ExtendedFaces3 ex = extended_faces(node);
-  for (const int g : ex.facets) {
-    if (g == f) continue;
-    if (!share(facet_vertices_[static_cast<std::size_t>(f)], facet_vertices_[static_cast<std::size_t>(g)])) return true;
-  }
-  return false;
+  return extended_interferes(node, [&](const auto& ex) {
+    for (const int g : ex.facets) {
+      if (g == f) continue;
+      if (!share(facet_vertices_[static_cast<std::size_t>(f)], facet_vertices_[static_cast<std::size_t>(g)]))
+        return true;
+    }
+    return false;
+  });
 }
 
 void OctreeBuilder::run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const) {

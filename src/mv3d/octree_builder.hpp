@@ -39,8 +39,10 @@
 // cut by protected boxes; instead a face sharing a vertex with the apex
 // interferes only if it meets P ∧ b itself (the 2D edge rule).
 // Cost: dominated by components() (exact, double filters before GMP): one per
-// child meeting ∂P per split, one per extended box that a crowding test or an
-// undecided balance-adjacency query needs (cached per node), and one per
+// child meeting ∂P per split, one per extended box that an undecided
+// crowding test (face_bounds' sheet and all-triangle bounds disagree,
+// octree_builder.cpp extended_interferes) or an undecided balance-adjacency
+// query needs (cached per node), and one per
 // undecided balance-adjacency query involving a box inside P (balance_adjacent
 // first tries the shared-triangle and whole-cube rules, octree_builder.cpp). Each looks only at
 // the candidate triangles handed down the tree (cube_tris, ex_tris) and
@@ -167,6 +169,12 @@ class OctreeBuilder {
   // changes); the centre of the node is mark 0 when P ∧ node is the whole cube.
   const CubeComponents& cached_extended(std::int32_t node) const;
 
+  // Does some face of P ∧ ex(node) interfere, by `rule` (monotone: a face set
+  // holding an interfering face makes every superset interfere)? Decided by
+  // face_bounds (cube_components.hpp) when its bounds agree, else on
+  // extended_faces.
+  template <class Rule>
+  bool extended_interferes(std::int32_t node, const Rule& rule) const;
   bool size_crowded(std::int32_t node) const;
   double size_over(const Cube& c) const;  // min of the size function over the closed cube
   bool vertex_crowded(std::int32_t node) const;
