@@ -4,19 +4,14 @@
 #include <bit>
 #include <cstddef>
 
+#include "quality/memo_key.hpp"
+
 namespace pqmesh {
 namespace {
 
-constexpr int kTableBits = 12;  // 4096 entries of ~330 bytes
+using detail::exact_difference;
 
-// x - y is exact: Knuth's two-difference leaves no rounding error. (NaN or
-// infinite inputs give a non-zero or NaN error: not exact.)
-bool exact_difference(double x, double y) {
-  const double d = x - y;
-  const double y_virtual = x - d, x_virtual = d + y_virtual;
-  const double error = (x - x_virtual) + (y_virtual - y);
-  return error == 0;
-}
+constexpr int kTableBits = 12;  // 4096 entries of ~330 bytes
 
 bool exact_difference(const Vec3& p, const Vec3& q) {
   return exact_difference(p.x, q.x) && exact_difference(p.y, q.y) && exact_difference(p.z, q.z);
@@ -26,16 +21,6 @@ bool exact_difference(const Vec3& p, const Vec3& q) {
 // see the header).
 bool exact_differences(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return exact_difference(b, a) && exact_difference(c, a) && exact_difference(d, a);
-}
-
-std::size_t slot_of(const std::uint64_t (&key)[9]) {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull;
-  for (const std::uint64_t k : key) {
-    h ^= k;
-    h *= 0xBF58476D1CE4E5B9ull;
-    h ^= h >> 31;
-  }
-  return static_cast<std::size_t>(h >> (64 - kTableBits));
 }
 
 }  // namespace
@@ -49,7 +34,7 @@ TetQuality TetrahedronQualityMemo::operator()(const Vec3& a, const Vec3& b, cons
       std::bit_cast<std::uint64_t>(u.x), std::bit_cast<std::uint64_t>(u.y), std::bit_cast<std::uint64_t>(u.z),
       std::bit_cast<std::uint64_t>(v.x), std::bit_cast<std::uint64_t>(v.y), std::bit_cast<std::uint64_t>(v.z),
       std::bit_cast<std::uint64_t>(w.x), std::bit_cast<std::uint64_t>(w.y), std::bit_cast<std::uint64_t>(w.z)};
-  Entry& e = table_[slot_of(key)];
+  Entry& e = table_[detail::memo_slot(key, kTableBits)];
   bool hit = e.used;
   for (int i = 0; i < 9 && hit; ++i) hit = e.key[i] == key[i];
   if (!hit) {

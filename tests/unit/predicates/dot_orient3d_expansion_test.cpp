@@ -17,14 +17,7 @@
 namespace pqmesh {
 namespace {
 
-struct Tally {
-  int positive = 0, zero = 0, negative = 0;
-  void count(Sign s) {
-    positive += s == Sign::Positive;
-    zero += s == Sign::Zero;
-    negative += s == Sign::Negative;
-  }
-};
+using Tally = test::SignTally;
 
 // The stage must answer (every input here is in its range); it and the whole
 // predicate must agree with the oracle. Returns the oracle's sign.

@@ -49,4 +49,15 @@ inline Sign dot_oracle(Vec2 a, Vec2 b, Vec2 c) {
   return static_cast<Sign>(sgn((q(b.x) - q(a.x)) * (q(c.x) - q(a.x)) + (q(b.y) - q(a.y)) * (q(c.y) - q(a.y))));
 }
 
+// Counts of each sign met, so a test can require that its inputs reached
+// every outcome (positive, zero, negative).
+struct SignTally {
+  int positive = 0, zero = 0, negative = 0;
+  void count(Sign s) {
+    positive += s == Sign::Positive;
+    zero += s == Sign::Zero;
+    negative += s == Sign::Negative;
+  }
+};
+
 }  // namespace pqmesh::test

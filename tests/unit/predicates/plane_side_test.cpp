@@ -19,14 +19,7 @@
 namespace pqmesh {
 namespace {
 
-struct Tally {
-  int positive = 0, zero = 0, negative = 0;
-  void count(Sign s) {
-    positive += s == Sign::Positive;
-    zero += s == Sign::Zero;
-    negative += s == Sign::Negative;
-  }
-};
+using Tally = test::SignTally;
 
 // PlaneSide's range: every coordinate zero or of magnitude in [2^-150, 2^150].
 bool in_range(double v) { return v == 0 || (std::abs(v) >= 0x1p-150 && std::abs(v) <= 0x1p150); }
