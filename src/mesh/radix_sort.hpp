@@ -1,11 +1,11 @@
 #pragma once
 // Stable least-significant-digit radix sort by 64-bit unsigned keys, and
-// order-preserving integer keys of doubles. Shared by the checker (mesh/) and
-// the mesher's boundary faces (mesh3d/): a pure sorting utility, it carries no
-// mesh knowledge, so the checker stays independent of the mesher.
+// order-preserving integer keys of doubles, for the checker's large sorts. A
+// pure sorting utility with no mesh knowledge (the mesher does not use it:
+// checker and mesher share no face code).
 //
-// Why: the checker and the boundary-face pass sort hundreds of thousands of
-// small records (faces, edges, vertex ids) by integer tuples. A comparison sort
+// Why: the checker sorts hundreds of thousands of small records (faces,
+// edges, facet records) by integer tuples. A comparison sort
 // costs ~n log n comparator calls; this costs one read pass (eight digit
 // histograms at once) plus one scatter pass per 8-bit digit that is not the
 // same for every item (ids below 2^24 need at most three per 32-bit field).
