@@ -37,15 +37,13 @@
 //
 // The stages live in check2d_topology.cpp (1-3) and check2d_domain.cpp (4);
 // check2d_stages.hpp holds their shared state.
-#include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "mesh/check2d_stages.hpp"
 #include "mesh/check_common.hpp"
+#include "mesh/radix_sort.hpp"
 #include "geometry/large_page_allocator.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
@@ -55,52 +53,22 @@ namespace detail::check2d {
 
 namespace {
 
-// A finite double as an unsigned integer with the same order: equal values
-// (also -0 and +0) give equal keys, so comparing keys is comparing values.
-std::uint64_t order_key(double v) {
-  const auto bits = std::bit_cast<std::uint64_t>(v + 0.0);  // -0 + 0 = +0
-  return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
-}
-
 // The vertex ids sorted by (x, y), ties by id: exactly sort_by_coordinates
-// (check_common.hpp), computed by a stable least-significant-digit radix sort
-// on the order keys (y first, then x), which is linear in the vertex count.
-// Every coordinate is finite (stage 1 passed).
+// (check_common.hpp), computed by a stable radix sort (radix_sort.hpp) on the
+// order keys, y first, then x, which is linear in the vertex count. Every
+// coordinate is finite (stage 1 passed).
 std::vector<int> vertex_order(const std::vector<Vec2>& pts) {
   struct Item {
     std::uint64_t kx, ky;
     int id;
   };
-  const std::size_t n = pts.size();
-  std::vector<Item> v(n), scratch(n);
-  std::uint64_t lo[2] = {~std::uint64_t{0}, ~std::uint64_t{0}}, hi[2] = {0, 0};
-  for (std::size_t i = 0; i < n; ++i) {
-    v[i] = {order_key(pts[i].x), order_key(pts[i].y), static_cast<int>(i)};
-    lo[0] = std::min(lo[0], v[i].kx);
-    hi[0] = std::max(hi[0], v[i].kx);
-    lo[1] = std::min(lo[1], v[i].ky);
-    hi[1] = std::max(hi[1], v[i].ky);
-  }
-  constexpr int kDigit = 11;
-  constexpr std::size_t kBuckets = std::size_t{1} << kDigit;
-  std::vector<std::size_t> start(kBuckets);
-  for (const int axis : {1, 0}) {  // y, then x (stable): order by (x, y, id)
-    const std::uint64_t base = lo[axis];
-    const int bits = static_cast<int>(std::bit_width(hi[axis] - base));  // keys minus base fit in `bits` bits
-    const auto digit = [&](const Item& it, int shift) {
-      return static_cast<std::size_t>((((axis == 0 ? it.kx : it.ky) - base) >> shift) & (kBuckets - 1));
-    };
-    for (int shift = 0; shift < bits; shift += kDigit) {
-      std::fill(start.begin(), start.end(), 0);
-      for (const Item& it : v) ++start[digit(it, shift)];
-      std::size_t sum = 0;
-      for (std::size_t& c : start) sum += std::exchange(c, sum);
-      for (const Item& it : v) scratch[start[digit(it, shift)]++] = it;
-      v.swap(scratch);
-    }
-  }
-  std::vector<int> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = v[i].id;
+  std::vector<Item> v(pts.size()), scratch;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    v[i] = {ordered_key(pts[i].x), ordered_key(pts[i].y), static_cast<int>(i)};
+  radix_sort_by_key(v, scratch, [](const Item& it) { return it.ky; });
+  radix_sort_by_key(v, scratch, [](const Item& it) { return it.kx; });
+  std::vector<int> order(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) order[i] = v[i].id;
   return order;
 }
 

@@ -21,6 +21,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -277,7 +278,7 @@ class PairBoxSide {
     return it->second;
   }
   const OctTree& tree_;
-  std::map<VertexKey, double> memo_;
+  std::unordered_map<VertexKey, double, VertexKeyHash> memo_;
   std::vector<std::int32_t> leaves_;
 };
 
