@@ -1065,6 +1065,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   out.warp_parallel = warps.parallel;
   out.warp_centres = warps.centres;
   out.warp_shortened = warps.shortened;
+  if (options.keep_warp_table) out.warps = std::make_shared<const WarpTable>(std::move(warps));
   return out;
 }
 

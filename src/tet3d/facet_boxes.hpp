@@ -56,6 +56,7 @@
 //   always tile it, so no prism is needed;
 //   otherwise (reflex E, centre outside the kernel): InternalError (not done).
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -64,6 +65,7 @@
 #include "tet3d/box_faces.hpp"
 #include "tet3d/square_cases.hpp"
 #include "tet3d/vertex_key.hpp"
+#include "tet3d/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -106,6 +108,9 @@ struct BoxMeshOptions {
   // warp_reflex_left), the behaviour before they were built (kept for the
   // comparison in reflex_slot_copies_test.cpp).
   bool reflex_copies = true;
+  // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
+  // clearances of box vertices outside P, which are no mesh vertices).
+  bool keep_warp_table = false;
 };
 
 struct BoxMesh {
@@ -128,6 +133,7 @@ struct BoxMesh {
   std::int64_t warp_centres = 0;   // square centres carried with their corners (among `warped`)
   std::int64_t warp_rebuilds = 0;  // warp tables rebuilt after freezing points of inverted tetrahedra
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
+  std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
 };
 
 // The squares of the job's box faces (face order (axis 0..2) x (lower,

@@ -213,7 +213,7 @@ struct KindShapes {
 // pairs and their smallest d / (h a); how many pair a crossing with a box
 // vertex or ring segment the warp left short of that facet or edge (the side
 // rule's refusals, which the thesis's proof does not have); how many are two
-// crossings of one facet from one box vertex; the smallest d / h of the
+// crossings of one facet from a box vertex left short; the smallest d / h of the
 // others, and the key kinds and box kind of that pair.
 struct Lemma6Pairs {
   std::int64_t under = 0, sharp = 0;
@@ -225,7 +225,7 @@ struct Lemma6Pairs {
   std::int64_t short_warp = 0;
   double short_min = INFINITY;
   // Pairs of crossings of one facet on two ring segments from one box vertex
-  // (Fig. 4.8), and their smallest d / h.
+  // the warp left short of that facet (Fig. 4.8), and their smallest d / h.
   std::int64_t one_vertex = 0;
   double one_vertex_min = INFINITY;
   std::string other_what;
@@ -316,13 +316,24 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
   };
   // Whether x, y are crossings of one facet F with two ring segments from a
   // common box vertex v (the case of the thesis's Fig. 4.8, bounded there by
-  // v's clearance from F). v is often outside P, not a vertex of the mesh, so
-  // its clearance cannot be read here; these pairs are counted apart.
-  auto crossings_from_one_vertex = [&](int x, int y) {
+  // v's clearance from F) and v, as warped (often outside P, so read from
+  // the warp table, its Fig. 4.7 copy for F if it has one), ended nearer than
+  // h(v)/16 to F's plane.
+  auto one_vertex_short = [&](int x, int y) {
     const VertexKey& kx = m.keys[static_cast<std::size_t>(x)];
     const VertexKey& ky = m.keys[static_cast<std::size_t>(y)];
-    return kx.kind == VertexKind::FacetCrossing && ky.kind == VertexKind::FacetCrossing && kx.facet == ky.facet &&
-           (kx.p == ky.p || kx.p == ky.q || kx.q == ky.p || kx.q == ky.q);
+    if (kx.kind != VertexKind::FacetCrossing || ky.kind != VertexKind::FacetCrossing || kx.facet != ky.facet ||
+        m.warps == nullptr)
+      return false;
+    for (const GridPoint& v : {kx.p, kx.q}) {
+      if (v != ky.p && v != ky.q) continue;
+      const Warp* w = m.warps->find(v);
+      const Vec3 at = m.warps->at_for_cut(v, kx.facet, w != nullptr ? w->at : grid_coordinates(tree, v));
+      const Vec3 along = at - m.mesh.vertices[static_cast<std::size_t>(x)];
+      const double to_plane = std::abs(dot(along, d.facet_normals[static_cast<std::size_t>(kx.facet)]));
+      if (to_plane < pair_side(grid_key(v), grid_key(v)) / 16) return true;
+    }
+    return false;
   };
   // Whether facet crossing y lies nearer than h(y)/8 to P edge E: y lies on
   // its warped ring segment, so that segment stayed nearer than h/8 to E,
@@ -402,7 +413,7 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
           l6.short_min = std::min(l6.short_min, r);
           continue;
         }
-        if (crossings_from_one_vertex(va, vb)) {
+        if (one_vertex_short(va, vb)) {
           ++l6.one_vertex;
           l6.one_vertex_min = std::min(l6.one_vertex_min, r);
           continue;
@@ -435,6 +446,7 @@ bool mesh_whole(const Domain3& d, const char* what, int seed, Totals& tot, bool 
   BoxMesh m;
   BoxMeshOptions mo;
   mo.warp = tot.warp;
+  mo.keep_warp_table = true;
   try {
     m = mesh_boxes(b.tree(), corners, d, jobs.jobs, mo);
   } catch (const InternalError& e) {
@@ -510,7 +522,7 @@ void print(const char* what, const Totals& t) {
                   t.kinds.lemma6[i]);
   }
   std::printf("\n  Lemma 6 pairs under h/16: %lld, of which sharp-edge pairs %lld (min d / (h a) %.4f), at a box vertex "
-              "or edge left short %lld (min d / h %.4f), crossings of one facet from one box vertex %lld (min d / h "
+              "or edge left short %lld (min d / h %.4f), crossings of one facet from a box vertex left short %lld (min d / h "
               "%.4f); others: min d / h %.4f (%s)",
               static_cast<long long>(t.l6.under), static_cast<long long>(t.l6.sharp), t.l6.sharp_min,
               static_cast<long long>(t.l6.short_warp), t.l6.short_min, static_cast<long long>(t.l6.one_vertex),
@@ -548,14 +560,35 @@ void print(const char* what, const Totals& t) {
 // Every test runs unwarped and warped (§4.3 second pass, warp.hpp).
 class AllBoxes : public ::testing::TestWithParam<bool> {};
 
+// Lemma 6's k1 (t = k1 h a): the smallest d / (h a) measured over the warped
+// sets below is 0.0112 (random tetrahedra), rounded down.
+constexpr double kLemma6K1 = 0.01;
+
+// Lemma 6 over a warped run (Lemma6Pairs).
+void expect_lemma6(const Totals& t) {
+  // Lemma 6 in the thesis's form: every pair closer than h/16 is a sharp-edge
+  // pair with d >= k1 h a, or one of the two forms where our warp may stop
+  // short of the thesis's clearances (the side rule's refusals), each held
+  // to the old flat floor 0.0015 h: a crossing with a box vertex or ring
+  // segment left short of that facet or edge (measured 0.0051 h, stars), and
+  // two crossings of one facet from a box vertex left short of it (0.0106 h,
+  // stars).
+  EXPECT_FALSE(t.l6.other_min < 1.0 / 16) << "a pair closer than h/16 of no listed form: " << t.l6.other_min
+                                          << " h, " << t.l6.other_what;
+  EXPECT_GE(t.l6.sharp_min, kLemma6K1) << "sharp-edge pairs: d / (h a)";
+  EXPECT_GE(t.l6.short_min, 0.0015) << "pairs at a box vertex or segment left short: d / h";
+  EXPECT_GE(t.l6.one_vertex_min, 0.0015) << "crossings of one facet from a box vertex left short: d / h";
+}
+
 // Measured floors with warping on (§4.3 both passes, warp.hpp; they fail
 // unwarped). Lemma 6 asks |xy| >= min(t, h/16) for distinct I-vertices x, y
 // of one tetrahedron; warped, every pair under h/16 is of a form listed in
-// Lemma6Pairs (sharp, left short, one facet from one box vertex), while
+// Lemma6Pairs (sharp, or at a box vertex or segment left short), while
 // unwarped, pairs of no listed form come to 0.017-0.047 h on the random
-// tetrahedra, stars and L-prisms (the check below would fail there). Worst aspect ratios warped / unwarped: facet 740 / 3,250 (663
-// before square centres moved with their corners), vertex 173 / 2,944,
-// two-facet 375 / 3,529. Edge boxes get no aspect floor: an edge E clipping a
+// tetrahedra, stars and L-prisms (the check below would fail there). Worst
+// aspect ratios warped / unwarped: facet 740 / 3,250 (663 before square
+// centres moved with their corners), vertex 173 / 2,944, two-facet 375 /
+// 3,529. Edge boxes get no aspect floor: an edge E clipping a
 // box within h/8 of a box edge has its two Case B vertices on the prewarped
 // faces, as close as E is to that box edge (Lemma 6 fails there; ALGORITHM.md
 // §12.5): warped 11,140 (stars). Putting them on the warped squares
@@ -563,24 +596,10 @@ class AllBoxes : public ::testing::TestWithParam<bool> {};
 // choosing the apex along E (facet_boxes.hpp, when the midpoint is nearly
 // in the plane of a face triangle) measured 1,520 (stars; worst of the random tetrahedra 384,
 // was 523): the ceiling below is that measurement, rounded up.
-// Lemma 6's k1 (t = k1 h a): the smallest d / (h a) measured over the warped
-// sets below is 0.0112 (random tetrahedra), rounded down.
-constexpr double kLemma6K1 = 0.01;
-
 void expect_warp_floors(const Totals& t) {
   if (!t.warp) return;
   EXPECT_GT(t.warped, 0);
-  // Lemma 6 in the thesis's form: every pair closer than h/16 is a sharp-edge
-  // pair with d >= k1 h a, or one of the two forms where our warp may stop
-  // short of the thesis's clearances (the side rule's refusals), each held
-  // to the old flat floor 0.0015 h: a crossing with a box vertex or ring
-  // segment left short of that facet or edge (measured 0.0051 h, stars), and
-  // two crossings of one facet from one box vertex (0.0106 h, stars).
-  EXPECT_FALSE(t.l6.other_min < 1.0 / 16) << "a pair closer than h/16 of no listed form: " << t.l6.other_min
-                                          << " h, " << t.l6.other_what;
-  EXPECT_GE(t.l6.sharp_min, kLemma6K1) << "sharp-edge pairs: d / (h a)";
-  EXPECT_GE(t.l6.short_min, 0.0015) << "pairs at a box vertex or segment left short: d / h";
-  EXPECT_GE(t.l6.one_vertex_min, 0.0015) << "crossings of one facet from one box vertex: d / h";
+  expect_lemma6(t);
   EXPECT_LE(t.kinds.aspect[1], 1000.0) << "worst facet-box aspect ratio";
   EXPECT_LE(t.kinds.aspect[3], 500.0) << "worst vertex-box aspect ratio";
   EXPECT_LE(t.kinds.aspect[4], 800.0) << "worst two-facet-box aspect ratio";
@@ -668,6 +687,23 @@ TEST(AllBoxesProbe, DISABLED_CorpusLemma6) {
     if (mesh_whole(d, model, 0, t, true, true)) print(model, t);
   }
 }
+
+// Lemma 6 on the corpus models with sharp or crowded features (the others
+// have no pair under h/16: ALGORITHM.md §12.5 (7)), on tet_mesh's octree
+// (separating splits, generic grid), warped.
+class CorpusLemma6 : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CorpusLemma6, PairsUnderHOver16AreSharpOrLeftShort) {
+  const Domain3 d = make_domain(read_plc(test::data_path(std::string("3d/") + GetParam())));
+  Totals t;
+  t.warp = true;
+  ASSERT_TRUE(mesh_whole(d, GetParam(), 0, t, true, true));
+  print(GetParam(), t);
+  expect_lemma6(t);
+}
+
+INSTANTIATE_TEST_SUITE_P(Warp, CorpusLemma6,
+                         ::testing::Values("star_vertex.poly", "wedge_5deg.poly", "schoenhardt.poly", "l_block.poly"));
 
 // The corpus models have dyadic coordinates: P edges and vertices lie on box
 // planes of the octree, which the square dispatcher refuses (Cases B/D throw
