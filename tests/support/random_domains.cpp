@@ -757,6 +757,16 @@ PolyhedronOptions every_run_polyhedron_options() {
   return o;
 }
 
+PolyhedronOptions harsh_polyhedron_options() {
+  PolyhedronOptions o;
+  o.polygon.max_vertices = 10;
+  o.polygon.max_holes = 2;
+  o.polygon.max_hole_vertices = 6;
+  o.polygon.min_spike_degrees = 5;
+  o.polygon.min_gap = 1e-2;
+  return o;
+}
+
 Plc3 random_polyhedron(std::uint64_t seed, const PolyhedronOptions& options) {
   return random_polyhedron_detail(seed, options).plc;
 }

@@ -165,6 +165,17 @@ PolyhedronOptions suite_polyhedron_options();
 // test counts them over the 200 seeds).
 PolyhedronOptions every_run_polyhedron_options();
 
+// The "harsh" family: the defaults above
+// made cheaper, keeping every feature the issue asks for (nonconvex outlines
+// with deep notches, up to 2 through-holes, cavities, spikes and notches of
+// 5-20 degrees, near-touching gaps of 1e-2..0.3 relative to the outer radius,
+// frustums, thin slabs, random scale and offset). Measured 2026-12-01 on
+// seeds 0-3 and 100-103 (Release, shared machine): 1.0M-6.1M tetrahedra and
+// 15-84 s cpu per meshed seed, so ~2-3 cpu hours for all 200. With the
+// generator defaults (24 outer vertices, 4 holes, 1-degree spikes, 1e-3 gaps)
+// single seeds take minutes.
+PolyhedronOptions harsh_polyhedron_options();
+
 // A cavity: the prism footprint x [z0, z1]; footprint counter-clockwise.
 struct Cavity {
   std::vector<Vec2> footprint;

@@ -36,7 +36,7 @@
 //    ~1/16 of the bounding box, spikes 12-30 deg, through-holes and cavities;
 //    seeds 0..199 in kBoundedShards DISABLED instances of
 //    kBoundedSeedsPerShard.
-//  - "harsh": harsh_options() below, 1e-2 gaps and 5-degree spikes; seeds
+//  - "harsh": test::harsh_polyhedron_options() (random_domains.hpp), 1e-2 gaps and 5-degree spikes; seeds
 //    0..199 in kHarshShards DISABLED instances of kHarshSeedsPerShard.
 // Test time. Measured 2026-12-01 (Release; cpu s per seed including
 // check_mesh and quality_report):
@@ -97,24 +97,6 @@
 namespace pqmesh::test {
 namespace {
 
-// The "harsh" family: the defaults of random_domains.hpp
-// made cheaper, keeping every feature the issue asks for (nonconvex outlines
-// with deep notches, up to 2 through-holes, cavities, spikes and notches of
-// 5-20 degrees, near-touching gaps of 1e-2..0.3 relative to the outer radius,
-// frustums, thin slabs, random scale and offset). Measured 2026-12-01 on
-// seeds 0-3 and 100-103 (Release, shared machine): 1.0M-6.1M tetrahedra and
-// 15-84 s cpu per meshed seed, so ~2-3 cpu hours for all 200. With the
-// generator defaults (24 outer vertices, 4 holes, 1-degree spikes, 1e-3 gaps)
-// single seeds take minutes.
-PolyhedronOptions harsh_options() {
-  PolyhedronOptions o;
-  o.polygon.max_vertices = 10;
-  o.polygon.max_holes = 2;
-  o.polygon.max_hole_vertices = 6;
-  o.polygon.min_spike_degrees = 5;
-  o.polygon.min_gap = 1e-2;
-  return o;
-}
 
 constexpr int kBoundedShards = 40;
 constexpr int kBoundedSeedsPerShard = 5;  // 200 seeds: 0..199
@@ -371,7 +353,7 @@ class RandomPolyhedraHarsh : public ::testing::TestWithParam<int> {};
 TEST_P(RandomPolyhedraHarsh, MeshValidWithAspectBelowCOverAlpha) {
   const int shard = GetParam();
   run_seeds(seed_range(static_cast<std::uint64_t>(shard) * kHarshSeedsPerShard, kHarshSeedsPerShard), "harsh",
-            harsh_options(), shard_title("harsh", shard, kHarshSeedsPerShard));
+            test::harsh_polyhedron_options(), shard_title("harsh", shard, kHarshSeedsPerShard));
 }
 
 INSTANTIATE_TEST_SUITE_P(DISABLED_Shards, RandomPolyhedraHarsh, ::testing::Range(0, kHarshShards));

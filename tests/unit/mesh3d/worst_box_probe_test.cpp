@@ -13,7 +13,7 @@
 // Run:  test_mesh3d --gtest_also_run_disabled_tests --gtest_filter='*WorstBoxProbe*'
 // Env:  PQMESH_PROBE_SEEDS="58,76,122,125" (default), PQMESH_PROBE_SHOW=3
 //       (tetrahedra printed per seed), PQMESH_PROBE_FAMILY=bounded (default),
-//       suite or every_run (the random family the seeds index);
+//       suite, every_run or harsh (the random family the seeds index);
 //       PQMESH_PROBE_FILE=data/3d/schoenhardt.poly probes that input file
 //       instead of the seeds (its "seed" is printed as 0).
 // The mesh is checked (check_mesh) like every mesh a test makes; the probe
@@ -80,6 +80,7 @@ test::PolyhedronOptions probe_family() {
   const std::string name = env != nullptr ? env : "bounded";
   if (name == "suite") return test::suite_polyhedron_options();
   if (name == "every_run") return test::every_run_polyhedron_options();
+  if (name == "harsh") return test::harsh_polyhedron_options();
   if (name != "bounded") ADD_FAILURE() << "PQMESH_PROBE_FAMILY: unknown family " << name << ", using bounded";
   return test::bounded_feature_polyhedron_options();
 }
