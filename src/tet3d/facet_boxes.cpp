@@ -485,17 +485,17 @@ class Assembler {
     if (!ec.convex())
       throw InternalError("tet3d: two-facet box " + std::to_string(leaf) + " at reflex edge " + std::to_string(edge) +
                           " with its centre outside the kernel (not done)");
-    // The apex's facet: the one whose plane is nearer the box centre, or the
-    // other when it makes the better valid box (two_facet_apex_facet).
+    // The apex: the vertex mean of the polygon of the facet whose plane is
+    // nearer the box centre, or another central point of either polygon when
+    // it makes the better valid box (two_facet_apex).
     const Chords* ch[2] = {&chord0, &chord1};
     const int near = std::fabs(pl[0]->distance(C)) <= std::fabs(pl[1]->distance(C)) ? 0 : 1;
-    const int apex = two_facet_apex_facet(tris, pl, ch, near);
-    out_.stats.two_facet_apex_farther += apex != near ? 1 : 0;
-    const FacetPlane& f = *pl[apex];
-    const FacetPlane& g = *pl[1 - apex];
-    const Chords& chord_f = *ch[apex];
-    const Chords& chord_g = *ch[1 - apex];
-    const int v = polygon_centre(chord_f, f, VertexKind::TwoFacetApex, centre);
+    const TwoFacetApex apex = two_facet_apex(tris, pl, ch, near);
+    out_.stats.two_facet_apex_farther += apex.facet != near ? 1 : 0;
+    const FacetPlane& f = *pl[apex.facet];
+    const FacetPlane& g = *pl[1 - apex.facet];
+    const Chords& chord_g = *ch[1 - apex.facet];
+    const int v = book_.id({VertexKind::TwoFacetApex, centre, {}, f.facet()}, [&] { return apex.at; });
     for (const Tri& t : tris)
       if (!(on_facet(t[0], f) && on_facet(t[1], f) && on_facet(t[2], f))) cone(leaf, t, v);
     fan(leaf, chord_g, g, VertexKind::TwoFacetCentre, centre, v);
@@ -598,12 +598,6 @@ class Assembler {
     return plane.settle(vertex_mean(chord), dominant_axis(plane.normal()));
   }
 
-  // polygon_point, keyed (kind, box centre, F).
-  int polygon_centre(const Chords& chord, const FacetPlane& plane, VertexKind kind, const GridPoint& centre) {
-    const VertexKey gk{kind, centre, {}, plane.facet()};
-    return book_.id(gk, [&] { return polygon_point(chord, plane); });
-  }
-
   // The worst tet_shape of the cones from `apex` over the face triangles
   // (those with all three vertices on `skip` left out, when given); +infinity
   // if one of them is not positive by exact orient3d.
@@ -631,31 +625,46 @@ class Assembler {
     return w;
   }
 
-  // The apex's facet of a two-facet box at a convex edge (our choice within
-  // §4.5.5, docs/ALGORITHM.md §12.5 Gap (1)): `near`, the facet whose plane
-  // is nearer the box centre, unless the other facet's apex makes the better
-  // box. Each candidate apex is its facet's polygon centre (vertex mean
-  // rounded onto the facet, as polygon_centre), coned to the face triangles
-  // not on that facet, with the other facet's polygon fanned from its vertex
-  // mean (as fan with no bar). The nearer plane's polygon can be a sliver
-  // lying almost in a box face (every-run seed 197: 0.002 h from face x = 1,
-  // whose warped corners then made its cones flat or inverted). The other
-  // facet is taken only if every one of its tetrahedra is positive by exact
-  // orient3d and its worst tet_shape is strictly better; the float shapes
-  // only choose between two valid constructions (an invalid `near` counts as
-  // +infinity, exactly decided), and when neither is valid `near` is kept and
-  // the rebuild loop (mesh_boxes) freezes the warp that caused it, as before.
-  int two_facet_apex_facet(const std::vector<Tri>& tris, const FacetPlane* const pl[2], const Chords* const ch[2],
-                           int near) const {
-    auto worst = [&](int i) {
+  // The apex of a two-facet box at a convex edge (our choice within §4.5.5,
+  // docs/ALGORITHM.md §12.5 Gap (1)): a central point of F ∩ b for one of
+  // the two facets F, coned to the face triangles not on F, with the other
+  // facet's polygon fanned from its vertex mean (as fan with no bar).
+  // The first candidate is `near` (the facet whose plane is nearer the box
+  // centre) with its vertex mean (polygon_point); the others are the other
+  // central points of that polygon (central_points), then the same for the
+  // other facet. A later candidate is taken only if every one of its
+  // tetrahedra is positive by exact orient3d and its worst tet_shape is
+  // strictly better; the float shapes only choose between valid
+  // constructions (an invalid first candidate counts as +infinity, exactly
+  // decided), and when none is valid the first is kept and the rebuild loop
+  // (mesh_boxes) freezes the warp that caused it, as before. Why both:
+  // the nearer plane's polygon can be a sliver lying almost in a box face
+  // (every-run seed 197: 0.002 h from face x = 1, whose warped corners then
+  // made its cones flat or inverted); the vertex mean is pulled towards a
+  // face split into small squares, and can lie almost on the line of a chord
+  // of that face (harsh seed 17: a 5 degree wedge's box beside boxes 16 and
+  // 32 times smaller, aspect 466,599).
+  struct TwoFacetApex {
+    int facet = 0;  // index into the two planes
+    Vec3 at;        // on that facet's plane (rounded onto it)
+  };
+  TwoFacetApex two_facet_apex(const std::vector<Tri>& tris, const FacetPlane* const pl[2], const Chords* const ch[2],
+                              int near) const {
+    TwoFacetApex best{near, polygon_point(*ch[near], *pl[near])};
+    double best_shape = std::numeric_limits<double>::infinity();
+    for (const int i : {near, 1 - near}) {
       const FacetPlane& f = *pl[i];
       const FacetPlane& g = *pl[1 - i];
-      const Vec3 apex = polygon_point(*ch[i], f);
-      const double cones = worst_cone(tris, apex, &f);
-      return std::max(cones, worst_fan(*ch[1 - i], polygon_point(*ch[1 - i], g), apex, true));
-    };
-    const double near_shape = worst(near);
-    return worst(1 - near) < near_shape ? 1 - near : near;
+      const Vec3 fan_point = polygon_point(*ch[1 - i], g);
+      for (const Vec3& apex : central_points(*ch[i], f)) {
+        const double shape = std::max(worst_cone(tris, apex, &f), worst_fan(*ch[1 - i], fan_point, apex, true));
+        if (shape < best_shape) {
+          best = {i, apex};
+          best_shape = shape;
+        }
+      }
+    }
+    return best;
   }
 
   // §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean
@@ -670,17 +679,32 @@ class Assembler {
   // every one of its fan tetrahedra is positive by exact orient3d and its
   // worst is better. Returns the point (rounded onto F).
   Vec3 fan_centre(const Chords& chord, const FacetPlane& plane, int v, double bar) const {
-    const int axis = dominant_axis(plane.normal());
-    const Vec3 mean = vertex_mean(chord);
     const Vec3 apex = book_.point(v);
     auto worst = [&](Vec3 g, bool exact) { return worst_fan(chord, g, apex, exact); };
-    Vec3 best = plane.settle(mean, axis);
+    Vec3 best = polygon_point(chord, plane);
     if (!(bar < std::numeric_limits<double>::infinity())) return best;
     double best_shape = worst(best, false);
     if (!(best_shape > bar)) return best;
-    // Area centroid: the fan triangles (a, b, mean) weighted by their signed
-    // area along F's normal (the chords turn one way around F ∩ b); boundary
-    // centroid: chord midpoints weighted by chord length.
+    const std::vector<Vec3> candidates = central_points(chord, plane);
+    for (std::size_t k = 1; k < candidates.size(); ++k) {
+      const double s = worst(candidates[k], true);
+      if (s < best_shape) {
+        best = candidates[k];
+        best_shape = s;
+      }
+    }
+    return best;
+  }
+
+  // Central points of the convex polygon F ∩ b (its chords), each rounded
+  // onto F: [0] the vertex mean (polygon_point), then the area centroid (the
+  // fan triangles (a, b, mean) weighted by their signed area along F's
+  // normal: the chords turn one way around F ∩ b) and the boundary's
+  // length-weighted centroid (chord midpoints), when defined.
+  std::vector<Vec3> central_points(const Chords& chord, const FacetPlane& plane) const {
+    const int axis = dominant_axis(plane.normal());
+    const Vec3 mean = vertex_mean(chord);
+    std::vector<Vec3> out = {plane.settle(mean, axis)};
     Vec3 area_sum, length_sum;
     double area = 0, length = 0;
     for (const auto& [edge, directed] : chord) {
@@ -692,18 +716,9 @@ class Assembler {
       length_sum = length_sum + (l / 2) * (a + b);
       length += l;
     }
-    std::vector<Vec3> candidates;
-    if (area != 0) candidates.push_back((1 / area) * area_sum);
-    if (length > 0) candidates.push_back((1 / length) * length_sum);
-    for (const Vec3& c : candidates) {
-      const Vec3 g = plane.settle(c, axis);
-      const double s = worst(g, true);
-      if (s < best_shape) {
-        best = g;
-        best_shape = s;
-      }
-    }
-    return best;
+    if (area != 0) out.push_back(plane.settle((1 / area) * area_sum, axis));
+    if (length > 0) out.push_back(plane.settle((1 / length) * length_sum, axis));
+    return out;
   }
 
   // Fan of F ∩ b from its central point g, coned to v. P ∧ b is convex and

@@ -89,7 +89,7 @@ struct FacetBoxStats {
   std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
   std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
   // Two-facet boxes coned from the facet whose plane is farther from the
-  // centre (facet_boxes.cpp two_facet_apex_facet).
+  // centre (facet_boxes.cpp two_facet_apex).
   std::int64_t two_facet_apex_farther = 0;
   // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted
   // once per asking box (a shared square is counted from both sides).

@@ -495,21 +495,23 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // the side rules decide as for every move). A Case C1
     // triangle 0.02 h wide on a face 0.004 h below an edge-box apex, spanned
     // by such a point frozen with the face, was the every-run family's worst
-    // (seed 30, docs/ALGORITHM.md §12.5). A point without a first-pass part,
-    // with nothing left of its move, or whose move a rule refuses is left in
+    // (seed 30, docs/ALGORITHM.md §12.5). A point with a second pass only is
+    // treated alike (stop 22; it used to be frozen whole: harsh seed 17, a
+    // grid point 1e-5 h from F left under a two-facet apex). A point with
+    // nothing left of its move, or whose move a rule refuses, is left in
     // place (frozen, as before); reported again, it is frozen.
     if (second_only != nullptr) {
       const auto it = second_only->find(c.p);
       if (it != second_only->end()) {
         Vec3 z = second_pass(x0, facet, bisect, left);
         const std::uint8_t sides = it->second;
-        const auto axes = static_cast<std::uint8_t>(first && left == 0 ? (sides & 7) | (sides >> 3) : 7);
+        const auto axes = static_cast<std::uint8_t>(left == 0 ? (sides & 7) | (sides >> 3) : 7);
         int kept = 0, dropped = 0;
         for (int a = 0; a < 3; ++a) {
           if ((axes & (1u << a)) == 0) continue;
           double& za = axis_ref(z, a);
           const double xa = axis_coord(x0, a);
-          const bool outward = first && left == 0 && out_of_reporting_box(a, sides, za - xa);
+          const bool outward = left == 0 && out_of_reporting_box(a, sides, za - xa);
           if (outward && out_of_face) {
             ++kept;
             continue;

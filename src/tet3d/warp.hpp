@@ -93,11 +93,11 @@ struct EdgeBoxBounds {
 // clearances (warp.cpp, "adaptive length"); empty: none.
 // `second_only` (may be null): points whose move inverted a tetrahedron once
 // (facet_boxes.cpp, rebuild loop), each with the axes (bit a) on which it
-// lies on a face of that tetrahedron's box: such a point with a first-pass or
-// face move gets its second pass alone from the prewarped point, without the
-// components along those axes (a face bent by the first pass past an edge-box
-// apex no longer freezes the point's move off its facet); otherwise, or when
-// nothing is left or a rule refuses it, it stays (frozen_left). The entry's
+// lies on a face of that tetrahedron's box: such a point gets its second pass
+// alone from the prewarped point (its first-pass and face moves dropped),
+// without the components along those axes (a face bent by the first pass
+// past an edge-box apex no longer freezes the point's move off its facet);
+// when nothing is left or a rule refuses it, it stays (frozen_left). The entry's
 // bits: a for the reporting box's low face along axis a, 3 + a for its high
 // face. `out_of_face`: a component along such an axis that points out of the
 // reporting box is kept (counted in out_of_face); mesh_boxes takes that

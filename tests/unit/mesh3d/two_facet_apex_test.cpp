@@ -1,6 +1,6 @@
 // Regression test for the two-facet box's apex facet (§4.5.5;
 // docs/ALGORITHM.md §12.5 Gap (1), two-facet form; facet_boxes.cpp
-// two_facet_apex_facet).
+// two_facet_apex).
 // Every-run seed 197 (a 4-gon frustum, top 7/8, alpha 34.3 deg): a two-facet
 // box (h = 1/128) at a convex P edge E running 0.035 h outside its face
 // x = 1. Facet F1 lies 0.002-0.018 h from that face, so F1 ∩ b is a sliver
