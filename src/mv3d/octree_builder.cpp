@@ -495,8 +495,9 @@ bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
 // vertex box) holds an edge e, and a face G of P ∧ ex(b) other than e and its
 // two superfacets interferes. Vertices are ignored (§4.1.4). Like the 2D edge
 // rule (ALGORITHM.md §8.3), a G that shares a vertex with e interferes only if
-// it meets P ∧ b itself; the thesis instead removes the protected vertex boxes
-// from ex(b), which we do not construct.
+// it meets P ∧ b itself, or, for a facet, a balance-adjacent box (see
+// neighbour_would_be_of_no_kind); the thesis instead removes the protected
+// vertex boxes from ex(b), which we do not construct.
 bool OctreeBuilder::edge_crowded(std::int32_t node) const {
   if (tree_.is_protected(node)) return false;
   const NodeData3& d = data(node);
@@ -518,7 +519,38 @@ bool OctreeBuilder::edge_crowded(std::int32_t node) const {
       if (!shares || contains(d.facets, f)) return true;
     }
     return false;
-  });
+  }) || neighbour_would_be_of_no_kind(node, e);
+}
+
+// The part of §4.1.4's rule that our edge rule above leaves out: a facet f of
+// an endpoint w of e may meet ex(b) outside w's united box without meeting
+// P ∧ b. The thesis then splits b; we split it only when f lies in a box that
+// §4.1.7 step 7 would protect with b and that would then be of no kind of
+// leaf_kind.hpp: an unshielded leaf, balance-adjacent to b, holding no vertex
+// and no edge, and facets other than e's that are neither one facet nor the
+// two facets of one edge (harsh seed 9: f beside e's two facets, three facets
+// of w's cone). The boxes protected with b descend from b and its present
+// neighbours (splits only shrink them, and balance-adjacency of two boxes
+// implies that of their ancestors), so the test made now still holds when b
+// is protected. It terminates: outside w's united box, f and e are a positive
+// distance apart (they meet only at w, Lemma 1).
+bool OctreeBuilder::neighbour_would_be_of_no_kind(std::int32_t node, const DomainEdge& e) const {
+  const auto one_edge_pair = [&](const std::vector<int>& fs) {
+    return fs.size() == 2 && std::any_of(domain_.edges.begin(), domain_.edges.end(), [&](const DomainEdge& g) {
+             return std::minmax(g.facets[0], g.facets[1]) == std::minmax(fs[0], fs[1]);
+           });
+  };
+  std::vector<std::int32_t> near;
+  tree_.neighbours(node, near);
+  for (const std::int32_t m : near) {
+    const NodeData3& dm = data(m);
+    if (!tree_.is_leaf(m) || !dm.has_component || shielded(m) || !dm.vertices.empty() || !dm.edges.empty()) continue;
+    const bool other = std::any_of(dm.facets.begin(), dm.facets.end(),
+                                   [&](int f) { return f != e.facets[0] && f != e.facets[1]; });
+    if (!other || dm.facets.size() == 1 || one_edge_pair(dm.facets)) continue;
+    if (tree_.level(m) <= tree_.level(node) ? balance_adjacent(m, node) : balance_adjacent(node, m)) return true;
+  }
+  return false;
 }
 
 // Thesis §4.1.5 "Facet crowded": b (unprotected: no vertex, no edge, outside

@@ -37,7 +37,9 @@
 // (Tree::balance; protected boxes are never split).
 // Deviations (documented at edge_crowded / facet_crowded): extended boxes are not
 // cut by protected boxes; instead a face sharing a vertex with the apex
-// interferes only if it meets P ∧ b itself (the 2D edge rule).
+// interferes only if it meets P ∧ b itself (the 2D edge rule), or, in the
+// edge phase, a facet lies in a leaf that step 5 above would protect with b and
+// that would be of no kind of leaf_kind.hpp (neighbour_would_be_of_no_kind).
 // Cost: dominated by components() (exact, double filters before GMP): one per
 // child meeting ∂P per split, one per extended box that an undecided
 // crowding test (face_bounds' sheet and all-triangle bounds disagree,
@@ -80,8 +82,9 @@ struct OctreeOptions {
   // The once-only separating splits of §4.1.7 steps 6 and 9 (every edge /
   // facet box and its balance-adjacent boxes split once before protection).
   // With them every leaf is one of the thesis's kinds (without them random
-  // polyhedron seed 7 leaves a protected box holding three facets of a vertex
-  // outside it); they cost about 10x the leaves (ALGORITHM.md §10). Off only
+  // polyhedron seed 7 left a protected box holding three facets of a vertex
+  // outside it, until the edge rule's neighbour test of stop 24 split it
+  // away); they cost about 10x the leaves (ALGORITHM.md §10). Off only
   // for callers that study other stages on smaller trees (the tet3d tests).
   bool separate = true;
   // Generic grid (tree/root_cube.hpp choose_generic_root_cube; ALGORITHM.md
@@ -179,6 +182,7 @@ class OctreeBuilder {
   double size_over(const Cube& c) const;  // min of the size function over the closed cube
   bool vertex_crowded(std::int32_t node) const;
   bool edge_crowded(std::int32_t node) const;
+  bool neighbour_would_be_of_no_kind(std::int32_t node, const DomainEdge& e) const;
   bool facet_crowded(std::int32_t node) const;
   void run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const);
   void center_vertices();

@@ -1,6 +1,8 @@
 #include "tet3d/box_jobs.hpp"
 
 #include <algorithm>
+#include <span>
+#include <string>
 
 namespace pqmesh::tet3d {
 
@@ -14,6 +16,31 @@ std::uint8_t united_block(const mv3d::OctreeBuilder& builder, std::int32_t n, in
   return block;
 }
 
+namespace {
+
+// The P faces of a leaf's component in the input file's numbering (vertices
+// and facets by id, edges by their two vertices), so that a refused leaf can
+// be found in the input.
+std::string faces_text(const Domain3& domain, const mv3d::LeafFaces& faces) {
+  const int first = domain.plc.source.first_id;
+  std::string s;
+  const auto list = [&](const char* name, std::span<const int> ids, auto&& text) {
+    s += s.empty() ? "" : "; ";
+    s += name;
+    if (ids.empty()) s += " none";
+    for (std::size_t i = 0; i < ids.size(); ++i) s += (i == 0 ? " " : ", ") + text(ids[i]);
+  };
+  list("vertices", faces.vertices, [&](int v) { return std::to_string(v + first); });
+  list("edges", faces.edges, [&](int e) {
+    const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
+    return std::to_string(de.a + first) + "-" + std::to_string(de.b + first);
+  });
+  list("facets", faces.facets, [&](int f) { return std::to_string(f + first); });
+  return s;
+}
+
+}  // namespace
+
 BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   const OctTree& tree = builder.tree();
   const Domain3& domain = builder.domain();
@@ -21,7 +48,8 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   BoxJobs out;
   std::vector<char> vertex_done(domain.plc.vertices.size(), 0);
   auto problem = [&](std::int32_t n, const std::string& why) {
-    out.problems.push_back("leaf " + std::to_string(n) + " (level " + std::to_string(tree.level(n)) + "): " + why);
+    out.problems.push_back("leaf " + std::to_string(n) + " (level " + std::to_string(tree.level(n)) + "; " +
+                           faces_text(domain, mv3d::leaf_faces(builder, n)) + "): " + why);
   };
   for (const std::int32_t n : builder.leaves_by_id()) {
     const mv3d::NodeData3& d = builder.data(n);

@@ -20,6 +20,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "mv3d/octree_builder.hpp"
 #include "mv3d/size_ratio.hpp"
@@ -67,8 +68,8 @@ Totals& totals() {
   return t;
 }
 
-void check_octree(const Domain3& d, const std::string& label) {
-  OctreeBuilder b(d);
+void check_octree(const Domain3& d, const std::string& label, OctreeOptions options = {}) {
+  OctreeBuilder b(d, std::move(options));
   const auto t0 = std::chrono::steady_clock::now();
   b.build();
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -115,6 +116,31 @@ TEST(OctreeInvariantsRandom, LeafKindsLemma1BalanceTheorem5) {
   for (const std::uint64_t seed : kFastSeeds) check_random(seed);
   std::printf("Theorem 5: smallest h(b)/(alpha h(B)) in this process %.4f (%s); asserted bound %.4f\n", totals().worst,
               totals().worst_where.c_str(), octest::kTheorem5Bound);
+}
+
+// Harsh seed 9 (random_domains.hpp, harsh_polyhedron_options) left a leaf of
+// kind Other in stops 22-23: balance-adjacent to an edge box of one edge of a
+// trihedral vertex cone, protected with it, and crossed by the cone's third
+// facet just outside the vertex's united box (ALGORITHM.md §10,
+// OctreeBuilder::neighbour_would_be_of_no_kind). On the generic grid, as
+// `pqmesh mesh` builds it (on the aligned grid that leaf does not arise).
+TEST(OctreeInvariantsRandom, HarshSeed9EdgeBoxNeighboursHaveAKind) {
+  const std::uint64_t seed = 9;
+  const test::PolyhedronOptions options = test::harsh_polyhedron_options();
+  SCOPED_TRACE(test::describe_polyhedron(seed, options));
+  OctreeOptions generic;
+  generic.generic_grid = true;
+  check_octree(make_domain(test::random_polyhedron(seed, options)), "harsh seed 9", std::move(generic));
+}
+
+// Seed 7 without the separating splits (OctreeOptions::separate) kept a
+// protected leaf holding three facets of a vertex outside it until stop 24
+// ("leaf 3882 (level 7; vertices none; edges none; facets 2, 3, 4): kind
+// other"), the case of harsh seed 9 above: the edge rule now splits it away.
+TEST(OctreeInvariantsRandom, Seed7WithoutSeparatingSplitsHasEveryLeafOfAKind) {
+  OctreeOptions unseparated;
+  unseparated.separate = false;
+  check_octree(make_domain(test::random_polyhedron(7, small_polyhedra())), "seed 7 unseparated", std::move(unseparated));
 }
 
 TEST(OctreeInvariantsRandom, DISABLED_MoreSeeds) {
