@@ -34,7 +34,7 @@ const std::vector<Command>& commands() {
        "markers, tetrahedra the region attribute. Coplanar neighbouring facets with equal markers\n"
        "are merged (as TetGen does); a flat edge between facets with different markers is refused\n"
        "(exit 2). Work in progress (issue 5): every box kind is meshed, warped and checked; the\n"
-       "summary prints the measured bound C / alpha (C = 50000, tested on the corpus, not yet a\n"
+       "summary prints the measured bound C / alpha (C = 20000, tested on the corpus, not yet a\n"
        "bound for every input: see the README's status table). A configuration the box code does\n"
        "not cover yet stops the run with exit 2, naming the leaf, 'not supported yet (issue 5)'.\n"
        "\n"
