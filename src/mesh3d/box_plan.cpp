@@ -19,9 +19,9 @@ std::string describe_leaf(const mv3d::OctreeBuilder& builder, std::int32_t n, co
   std::ostringstream s;
   s.precision(17);
   s << "box [" << c.lo.x << ", " << c.hi.x << "] x [" << c.lo.y << ", " << c.hi.y << "] x [" << c.lo.z << ", "
-    << c.hi.z << "] (level " << builder.tree().level(n) << "), " << faces.vertices.size() << " vertices, "
-    << faces.edges.size() << " edges, " << faces.facets.size() << " facets";
-  if (faces.vertex_owner >= 0) s << ", in the united box of vertex " << faces.vertex_owner;
+    << c.hi.z << "] (level " << builder.tree().level(n) << "); " << mv3d::faces_text(builder.domain(), faces);
+  if (faces.vertex_owner >= 0)
+    s << "; in the united box of vertex " << faces.vertex_owner + builder.domain().plc.source.first_id;
   return s.str();
 }
 

@@ -23,7 +23,25 @@ LeafFaces leaf_faces(const OctreeBuilder& builder, std::int32_t node) {
   return {d.has_component, d.vertices, d.edges, d.facets, d.vertex_owner};
 }
 
-LeafClassifier::LeafClassifier(const Domain3& domain) : domain_(domain) {
+std::string faces_text(const Domain3& domain, const LeafFaces& faces) {
+  const int first = domain.plc.source.first_id;
+  std::string s;
+  const auto list = [&](const char* name, std::span<const int> ids, auto&& text) {
+    s += s.empty() ? "" : "; ";
+    s += name;
+    if (ids.empty()) s += " none";
+    for (std::size_t i = 0; i < ids.size(); ++i) s += (i == 0 ? " " : ", ") + text(ids[i]);
+  };
+  list("vertices", faces.vertices, [&](int v) { return std::to_string(v + first); });
+  list("edges", faces.edges, [&](int e) {
+    const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
+    return std::to_string(de.a + first) + "-" + std::to_string(de.b + first);
+  });
+  list("facets", faces.facets, [&](int f) { return std::to_string(f + first); });
+  return s;
+}
+
+LeafClassifier::LeafClassifier(const Domain3& domain) : domain_(domain), facet_pair_edges_(domain) {
   const std::size_t nv = domain.plc.vertices.size();
   vertex_edges_.resize(nv);
   vertex_facets_.resize(nv);
@@ -31,8 +49,6 @@ LeafClassifier::LeafClassifier(const Domain3& domain) : domain_(domain) {
     const DomainEdge& de = domain.edges[e];
     vertex_edges_[static_cast<std::size_t>(de.a)].push_back(static_cast<int>(e));
     vertex_edges_[static_cast<std::size_t>(de.b)].push_back(static_cast<int>(e));
-    const auto key = std::minmax(de.facets[0], de.facets[1]);
-    facet_pair_edge_.emplace(std::pair<int, int>{key.first, key.second}, static_cast<int>(e));
   }
   for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
     for (const auto& loop : domain.plc.facets[f].loops)
@@ -83,8 +99,8 @@ LeafClass LeafClassifier::classify(const LeafFaces& faces) const {
   if (!faces.edges.empty()) return {LeafKind::Other, -1};
   if (faces.facets.size() == 1) return {LeafKind::FacetCone, faces.facets[0]};
   if (faces.facets.size() == 2) {
-    const auto it = facet_pair_edge_.find({faces.facets[0], faces.facets[1]});
-    if (it != facet_pair_edge_.end()) return {LeafKind::TwoFacet, it->second};
+    const int e = facet_pair_edges_.edge_between(faces.facets[0], faces.facets[1]);
+    if (e >= 0) return {LeafKind::TwoFacet, e};
   }
   return {LeafKind::Other, -1};
 }

@@ -24,11 +24,11 @@
 // Condition (c) of the cone definitions (the faces of P ∧ ex(b)) is not part
 // of the kind; tests/unit/mv3d/octree_corpus_test.cpp checks it.
 #include <cstdint>
-#include <map>
 #include <span>
-#include <utility>
+#include <string>
 #include <vector>
 
+#include "mv3d/facet_pair_edges.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/domain.hpp"
 
@@ -51,6 +51,11 @@ struct LeafFaces {
 // The faces of an octree leaf as the builder recorded them.
 LeafFaces leaf_faces(const OctreeBuilder& builder, std::int32_t node);
 
+// The faces in the input file's numbering (vertices and facets by id, edges by
+// their two vertices), e.g. "vertices none; edges 3-7; facets 2, 5", so that a
+// refused leaf can be found in the input.
+std::string faces_text(const Domain3& domain, const LeafFaces& faces);
+
 struct LeafClass {
   LeafKind kind = LeafKind::Other;
   // VertexCone: the vertex; EdgeCone and TwoFacet: the edge (index into
@@ -70,7 +75,7 @@ class LeafClassifier {
 
   const Domain3& domain_;
   std::vector<std::vector<int>> vertex_edges_, vertex_facets_;  // sorted, per vertex
-  std::map<std::pair<int, int>, int> facet_pair_edge_;          // (f < g) -> an edge on both
+  FacetPairEdges facet_pair_edges_;
 };
 
 }  // namespace pqmesh::mv3d

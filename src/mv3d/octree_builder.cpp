@@ -90,7 +90,10 @@ bool share_triangle(const NodeData3& a, const NodeData3& b) {
 }  // namespace
 
 OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
-    : domain_(domain), options_(std::move(options)), tree_(root_for(domain, options_.generic_grid)) {
+    : domain_(domain),
+      options_(std::move(options)),
+      tree_(root_for(domain, options_.generic_grid)),
+      facet_pair_edges_(domain) {
   // The tree must honour RootCube::offset: its root planes are origin + offset.
   // (A Tree without offset support would silently mesh on the aligned grid.)
   for (int a = 0; a < 3; ++a)
@@ -536,9 +539,7 @@ bool OctreeBuilder::edge_crowded(std::int32_t node) const {
 // distance apart (they meet only at w, Lemma 1).
 bool OctreeBuilder::neighbour_would_be_of_no_kind(std::int32_t node, const DomainEdge& e) const {
   const auto one_edge_pair = [&](const std::vector<int>& fs) {
-    return fs.size() == 2 && std::any_of(domain_.edges.begin(), domain_.edges.end(), [&](const DomainEdge& g) {
-             return std::minmax(g.facets[0], g.facets[1]) == std::minmax(fs[0], fs[1]);
-           });
+    return fs.size() == 2 && facet_pair_edges_.edge_between(fs[0], fs[1]) >= 0;
   };
   std::vector<std::int32_t> near;
   tree_.neighbours(node, near);

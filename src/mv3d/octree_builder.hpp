@@ -52,11 +52,12 @@
 // costs O(candidates), independent of the number of facet triangles.
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "mv3d/cube_components.hpp"
+#include "mv3d/facet_pair_edges.hpp"
 #include "pqmesh/domain.hpp"
 #include "tree/tree.hpp"
 
@@ -77,8 +78,8 @@ struct SizeField3 {
   std::string path;
 };
 struct OctreeOptions {
-  double max_size = 0;     // largest box side anywhere; 0: no cap
-  SizeField3 size_field;   // empty: none
+  double max_size = 0;    // largest box side anywhere; 0: no cap
+  SizeField3 size_field;  // empty: none
   // The once-only separating splits of §4.1.7 steps 6 and 9 (every edge /
   // facet box and its balance-adjacent boxes split once before protection).
   // With them every leaf is one of the thesis's kinds (without them random
@@ -189,8 +190,8 @@ class OctreeBuilder {
   // Leaves meeting P that hold a P edge (Edge) or a P facet (Facet), outside
   // every protected box, with their balance-adjacent unprotected leaves.
   std::vector<std::int32_t> separation_set(bool facets) const;
-  void separate(OctPhase which);           // §4.1.7 steps 6 and 9
-  void protect_boxes(bool facets);         // §4.1.4 / §4.1.5 protection
+  void separate(OctPhase which);    // §4.1.7 steps 6 and 9
+  void protect_boxes(bool facets);  // §4.1.4 / §4.1.5 protection
   void protect(std::int32_t node, OctPhase step);
   bool shielded(std::int32_t node) const;  // protected, or a piece of a united vertex box
   void record_phase(std::int32_t node);
@@ -202,7 +203,8 @@ class OctreeBuilder {
   mutable OctreeStats stats_;  // mutable: const queries count their components() calls
   std::vector<NodeData3> data_;
   std::vector<Cube> vertex_box_;
-  std::vector<std::vector<int>> facet_vertices_;                   // sorted vertex ids of each facet (all loops)
+  std::vector<std::vector<int>> facet_vertices_;  // sorted vertex ids of each facet (all loops)
+  FacetPairEdges facet_pair_edges_;
   mutable std::vector<std::unique_ptr<CubeComponents>> ex_cache_;  // per node id, see cached_extended
   std::vector<OctPhase> phase_;                                    // per node id
   std::vector<OctPhase> protected_by_;                             // per node id, see protected_by

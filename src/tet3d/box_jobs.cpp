@@ -1,7 +1,6 @@
 #include "tet3d/box_jobs.hpp"
 
 #include <algorithm>
-#include <span>
 #include <string>
 
 namespace pqmesh::tet3d {
@@ -16,31 +15,6 @@ std::uint8_t united_block(const mv3d::OctreeBuilder& builder, std::int32_t n, in
   return block;
 }
 
-namespace {
-
-// The P faces of a leaf's component in the input file's numbering (vertices
-// and facets by id, edges by their two vertices), so that a refused leaf can
-// be found in the input.
-std::string faces_text(const Domain3& domain, const mv3d::LeafFaces& faces) {
-  const int first = domain.plc.source.first_id;
-  std::string s;
-  const auto list = [&](const char* name, std::span<const int> ids, auto&& text) {
-    s += s.empty() ? "" : "; ";
-    s += name;
-    if (ids.empty()) s += " none";
-    for (std::size_t i = 0; i < ids.size(); ++i) s += (i == 0 ? " " : ", ") + text(ids[i]);
-  };
-  list("vertices", faces.vertices, [&](int v) { return std::to_string(v + first); });
-  list("edges", faces.edges, [&](int e) {
-    const DomainEdge& de = domain.edges[static_cast<std::size_t>(e)];
-    return std::to_string(de.a + first) + "-" + std::to_string(de.b + first);
-  });
-  list("facets", faces.facets, [&](int f) { return std::to_string(f + first); });
-  return s;
-}
-
-}  // namespace
-
 BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   const OctTree& tree = builder.tree();
   const Domain3& domain = builder.domain();
@@ -49,7 +23,7 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   std::vector<char> vertex_done(domain.plc.vertices.size(), 0);
   auto problem = [&](std::int32_t n, const std::string& why) {
     out.problems.push_back("leaf " + std::to_string(n) + " (level " + std::to_string(tree.level(n)) + "; " +
-                           faces_text(domain, mv3d::leaf_faces(builder, n)) + "): " + why);
+                           mv3d::faces_text(domain, mv3d::leaf_faces(builder, n)) + "): " + why);
   };
   for (const std::int32_t n : builder.leaves_by_id()) {
     const mv3d::NodeData3& d = builder.data(n);
@@ -62,8 +36,8 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
       // A piece holds v's cone only (kind VertexCone by the united-box rule,
       // or EmptyInside); anything else would be left unmeshed by the cone.
       if (c.kind != mv3d::LeafKind::VertexCone && c.kind != mv3d::LeafKind::EmptyInside)
-        problem(n, std::string("a piece of the united box of vertex ") + std::to_string(v) + " of kind " +
-                       mv3d::to_string(c.kind));
+        problem(n, std::string("a piece of the united box of vertex ") +
+                       std::to_string(v + domain.plc.source.first_id) + " of kind " + mv3d::to_string(c.kind));
       if (!std::binary_search(d.vertices.begin(), d.vertices.end(), v)) continue;
       if (vertex_done[static_cast<std::size_t>(v)]++) continue;
       // The united box: 2x2x2 leaves of n's size; which side per axis.
