@@ -1,8 +1,9 @@
 #pragma once
-// Which P edge do two facets share? Two facets of P meet only along the line
-// of their planes (they are not coplanar, merge_coplanar.hpp), so a pair may
-// share several collinear edges or none. The lookup answers with the lowest
-// edge index on both, the one leaf_kind.hpp names as a TwoFacet leaf's edge.
+// Which P edge do two facets share? A pair may share none, or several (two
+// facets in different planes along the line where the planes meet; coplanar
+// neighbours that merge_coplanar.hpp left unmerged anywhere). The lookup
+// answers with the lowest edge index on both, the edge leaf_kind.hpp names
+// as a TwoFacet leaf's edge.
 // Built once from Domain3::edges; a lookup is a binary search.
 #include <array>
 #include <vector>
