@@ -27,15 +27,21 @@ constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 
 constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-constexpr Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+constexpr Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 
 // Coordinate number `axis` (0 = x, 1 = y, 2 = z) of p, for code that loops
 // over the axes; axis_ref gives it as an lvalue.
 constexpr double axis_coord(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 constexpr double& axis_ref(Vec3& p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
+
+// The axis of n's largest absolute coordinate, ties to the lower axis: the
+// axis to drop when a plane with normal n is projected to 2D, or to move
+// along when settling a point onto it.
+inline int dominant_axis(Vec3 n) {
+  const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
+  return ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+}
 
 // Angle in radians between two nonzero vectors, robust near 0 and pi
 // (atan2 of |a x b| and a.b instead of acos).

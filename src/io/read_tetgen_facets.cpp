@@ -10,7 +10,6 @@ namespace {
 
 enum class Where { Inside, Boundary, Outside };
 
-
 // Exact winding-number test of q against the polygon projected by dropping
 // `drop` (axes u, v in orient2d_projected's cyclic order).
 Where locate(const std::vector<Vec3>& V, const std::vector<int>& poly, const Vec3& q, int drop) {
@@ -60,9 +59,7 @@ int facet_drop(const std::vector<Vec3>& V, const std::vector<std::vector<int>>& 
     for (std::size_t i = 0; i < poly.size(); ++i) n = n + cross(V[poly[i]] - o, V[poly[(i + 1) % poly.size()]] - o);
     if (norm(n) > norm(best)) best = n;
   }
-  const double ax = std::abs(best.x), ay = std::abs(best.y), az = std::abs(best.z);
-  if (ax >= ay && ax >= az) return 0;
-  return ay >= az ? 1 : 2;
+  return dominant_axis(best);
 }
 
 }  // namespace
@@ -103,7 +100,8 @@ std::string split_tetgen_facet(const std::vector<Vec3>& V, const std::vector<std
       if (i == j || hole[i] || !enclosed[i * n + j]) continue;
       if (parent[j] < 0 || enclosed[static_cast<std::size_t>(parent[j]) * n + i]) parent[j] = static_cast<long>(i);
     }
-    if (hole[j] && parent[j] < 0) return "hole polygon " + std::to_string(j + 1) + " lies in no other polygon of the facet";
+    if (hole[j] && parent[j] < 0)
+      return "hole polygon " + std::to_string(j + 1) + " lies in no other polygon of the facet";
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (hole[i]) continue;

@@ -42,11 +42,13 @@ class FacetFinder {
     const Vec3 &a = vtx(tri[0]), &b = vtx(tri[1]), &c = vtx(tri[2]);
     const std::array<Sign, 3>& n = normal_[static_cast<std::size_t>(f)];
     for (int i = 0; i < 3; ++i) {
-      const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v[static_cast<std::size_t>(i)])) << 32) |
-                                static_cast<std::uint32_t>(f);
+      const std::uint64_t key =
+          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v[static_cast<std::size_t>(i)])) << 32) |
+          static_cast<std::uint32_t>(f);
       auto it = cache_.find(key);
       if (it == cache_.end())
-        it = cache_.emplace(key, detail::within_ulp_of_plane_at_extremes(p[static_cast<std::size_t>(i)], a, b, c, n)).first;
+        it = cache_.emplace(key, detail::within_ulp_of_plane_at_extremes(p[static_cast<std::size_t>(i)], a, b, c, n))
+                 .first;
       if (!it->second) return false;
     }
     return true;
@@ -55,8 +57,7 @@ class FacetFinder {
   // The projected point lies in a facet triangle of f (closed).
   bool contains(int f, Vec3 q) const {
     const Vec3 n = d_.facet_normals[static_cast<std::size_t>(f)];
-    const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
-    const int drop = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    const int drop = dominant_axis(n);
     for (const int t : tris_of_[static_cast<std::size_t>(f)]) {
       const auto& tri = d_.facet_triangles[static_cast<std::size_t>(t)];
       const Vec3 &a = vtx(tri[0]), &b = vtx(tri[1]), &c = vtx(tri[2]);
@@ -81,8 +82,7 @@ class FacetFinder {
 
 void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf, TetMesh3& mesh) {
   const Domain3& d = builder.domain();
-  const std::vector<std::int64_t> singles =
-      single_faces(mesh.tetrahedra, static_cast<int>(mesh.vertices.size()));
+  const std::vector<std::int64_t> singles = single_faces(mesh.tetrahedra, static_cast<int>(mesh.vertices.size()));
 
   FacetFinder finder(d);
   std::vector<int> candidates;

@@ -48,7 +48,6 @@ std::pair<double, double> project(Vec3 p, int drop) {
   }
 }
 
-
 [[noreturn]] void fail(const Plc3& plc, ErrorCode code, const std::string& what, std::vector<std::int64_t> ids,
                        int facet) {
   throw DomainError(code, what, std::move(ids), plc.source.path, plc.source.line_of_element(facet));
@@ -87,9 +86,8 @@ void AlphaGeometry::build_frames() {
       const Vec3 c = cross(V[outer[i]] - o, V[outer[i + 1]] - o);
       normal = normal + c;
     }
-    const double ax = std::abs(normal.x), ay = std::abs(normal.y), az = std::abs(normal.z);
     FacetFrame& fr = frames_[f];
-    fr.drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+    fr.drop = dominant_axis(normal);
     // Lexicographically lowest vertex in the projection: a convex corner.
     std::size_t low = 0;
     for (std::size_t i = 1; i < n; ++i)
@@ -171,8 +169,10 @@ void AlphaGeometry::build_edges() {
 
 int AlphaGeometry::find_edge(int p, int q) const {
   const int a = std::min(p, q), b = std::max(p, q);
-  auto it = std::lower_bound(edges_.begin(), edges_.end(), std::pair{a, b},
-                             [](const EdgeInfo& e, std::pair<int, int> key) { return std::pair{e.a, e.b} < key; });
+  auto it =
+      std::lower_bound(edges_.begin(), edges_.end(), std::pair{a, b}, [](const EdgeInfo& e, std::pair<int, int> key) {
+        return std::pair{e.a, e.b} < key;
+      });
   if (it == edges_.end() || it->a != a || it->b != b) return -1;
   return int(it - edges_.begin());
 }

@@ -42,12 +42,6 @@ Vec3 newell_normal(const std::vector<Vec3>& V, const int* ids, int k) {
   return n;
 }
 
-int dominant_axis(Vec3 n) {
-  const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
-  if (ax >= ay && ax >= az) return 0;
-  return ay >= az ? 1 : 2;
-}
-
 // Exact orientation of a simple cyclic vertex list in the projection dropping
 // `drop`: the turn at its lexicographically smallest projected vertex (a hull
 // vertex, so the turn there is the turn of the whole polygon). Zero for spikes
@@ -65,7 +59,7 @@ Sign cyclic_orientation(const std::vector<Vec3>& V, const int* ids, int k, int d
 }
 
 struct PolyInfo {
-  bool valid = false;  // simple enough to merge: distinct ids, not collinear, planar
+  bool valid = false;          // simple enough to merge: distinct ids, not collinear, planar
   int a = -1, b = -1, c = -1;  // three non-collinear vertices spanning its plane
   int drop = 2;                // projection axis; the plane is not perpendicular to it (exact)
   Sign facing = Sign::Zero;    // orientation in that projection
@@ -282,9 +276,8 @@ class Merger {
     }
     std::vector<int> by_from(edges.size());
     for (std::size_t i = 0; i < edges.size(); ++i) by_from[i] = static_cast<int>(i);
-    std::sort(by_from.begin(), by_from.end(), [&](int x, int y) {
-      return edges[x].from != edges[y].from ? edges[x].from < edges[y].from : x < y;
-    });
+    std::sort(by_from.begin(), by_from.end(),
+              [&](int x, int y) { return edges[x].from != edges[y].from ? edges[x].from < edges[y].from : x < y; });
     std::vector<bool> used(edges.size(), false);
     loops.clear();
     std::vector<int> candidates;
@@ -322,7 +315,8 @@ class Merger {
       sorted = loops[i];
       std::sort(sorted.begin(), sorted.end());
       if (sorted.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
-      const Sign o = facing * cyclic_orientation(soup_.vertices, loops[i].data(), static_cast<int>(loops[i].size()), drop);
+      const Sign o =
+          facing * cyclic_orientation(soup_.vertices, loops[i].data(), static_cast<int>(loops[i].size()), drop);
       if (o == Sign::Zero) return false;
       if (o == Sign::Positive) {
         if (outer >= 0) return false;

@@ -13,7 +13,7 @@
 // F). g: the vertex mean of F ∩ b, unless its worst fan tetrahedron is worse
 // than the box's worst cone; then the polygon's area centroid or its
 // boundary's length-weighted centroid if better, every fan tetrahedron
-// positive by exact orient3d (fan_centre in facet_boxes.cpp).
+// positive by exact orient3d (fan_centre in facet_polygon.cpp).
 // Edge box b (edge E, facets F, G): v = the midpoint of E ∩ I(b), i.e. of the
 // box's two Case B vertices where E enters and leaves it (wherever the square
 // code put them, warped_crossing.hpp; the midpoint of E ∩ the prewarped cube
@@ -21,9 +21,10 @@
 // b's faces. Our choice: when a point at 1/4, 3/8, 5/8 or 3/4 of E ∩ I(b)
 // gives a better worst cone (every cone positive, exact), v is that point
 // instead (a chord of F or G on a box face whose line meets E near the
-// midpoint makes the boundary triangle of that chord and v nearly flat). P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in
-// the open cube, so the cones tile it; their faces through v on F and G are
-// the boundary triangles there.
+// midpoint makes the boundary triangle of that chord and v nearly flat).
+// P ∧ b = cube ∩ wedge(E) is star-shaped from every point of E in the open
+// cube, so the cones tile it; their faces through v on F and G are the
+// boundary triangles there.
 // Vertex box (P vertex v, its united 2x2x2 box B, §4.1.3; the job names the
 // leaf holding v and which side B extends to): v coned to the π-triangles of
 // B's outer faces (squares of the finer side); B's inner leaves are not meshed
@@ -83,13 +84,13 @@ struct BoxJob {
 struct FacetBoxStats {
   std::int64_t empty = 0, inside = 0, on_facet = 0, beyond = 0;  // boxes per case
   std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
-  std::int64_t edge_apex_moved = 0;  // edge boxes whose apex is not E's midpoint (facet_boxes.cpp apex_on_edge)
-  std::int64_t edge_two_apex = 0;  // edge boxes coned from v on E and a second point (facet_boxes.cpp two_apex_box)
-  std::int64_t edge_two_apex_flat = 0;  // the same, where v's cones were flat (facet_boxes.cpp flat_two_apex_box)
-  std::int64_t two_facet_centre = 0;  // two-facet boxes coned from their centre (the rest: from a facet)
-  std::int64_t two_facet_reflex = 0;  // two-facet boxes at a reflex edge (all coned from their centre)
+  std::int64_t edge_apex_moved = 0;     // edge boxes whose apex is not E's midpoint (edge_box.cpp apex_on_edge)
+  std::int64_t edge_two_apex = 0;       // edge boxes coned from v on E and a second point (edge_box.cpp two_apex_box)
+  std::int64_t edge_two_apex_flat = 0;  // the same, where v's cones were flat (edge_box.cpp flat_two_apex_box)
+  std::int64_t two_facet_centre = 0;    // two-facet boxes coned from their centre (the rest: from a facet)
+  std::int64_t two_facet_reflex = 0;    // two-facet boxes at a reflex edge (all coned from their centre)
   // Two-facet boxes coned from the facet whose plane is farther from the
-  // centre (facet_boxes.cpp two_facet_apex).
+  // centre (two_facet_box.cpp two_facet_apex).
   std::int64_t two_facet_apex_farther = 0;
   // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted
   // once per asking box (a shared square is counted from both sides).
@@ -114,24 +115,24 @@ struct BoxMeshOptions {
 };
 
 struct BoxMesh {
-  TetMesh3 mesh;                        // region attribute 0; no boundary face list
-  std::vector<VertexKey> keys;          // per vertex
-  std::vector<std::int32_t> tet_leaf;   // per tetrahedron
-  std::vector<std::int32_t> tet_job;    // per tetrahedron: index into the jobs
+  TetMesh3 mesh;                       // region attribute 0; no boundary face list
+  std::vector<VertexKey> keys;         // per vertex
+  std::vector<std::int32_t> tet_leaf;  // per tetrahedron
+  std::vector<std::int32_t> tet_job;   // per tetrahedron: index into the jobs
   FacetBoxStats stats;
   // Second warping pass (warp.hpp): vertices moved (of which onto an acute
   // wedge's bisector), and left in place: side conflict, in a reflex edge's
   // slot with a Fig. 4.7 copy refused, crowded, would invert a tetrahedron
   // (frozen, facet_boxes.cpp); not moved: exactly on a facet plane. Slot
   // vertices with both Fig. 4.7 copies built (not among `warped`).
-  std::int64_t warped = 0, warp_conflicts = 0, warp_bisected = 0, warp_fallback = 0, warp_reflex_left = 0, warp_crowded_left = 0,
-               warp_on_plane = 0, warp_inverting_left = 0, warp_reflex_copied = 0;
+  std::int64_t warped = 0, warp_conflicts = 0, warp_bisected = 0, warp_fallback = 0, warp_reflex_left = 0,
+               warp_crowded_left = 0, warp_on_plane = 0, warp_inverting_left = 0, warp_reflex_copied = 0;
   // First pass (box edges near P edges): vertices moved by it (among
   // `warped`), and first-pass moves not made (box edge parallel to E).
   std::int64_t warp_first_pass = 0, warp_parallel_left = 0;
-  std::int64_t warp_parallel = 0;  // first-pass moves of box-edge pieces parallel to E
-  std::int64_t warp_centres = 0;   // square centres carried with their corners (among `warped`)
-  std::int64_t warp_rebuilds = 0;  // warp tables rebuilt after freezing points of inverted tetrahedra
+  std::int64_t warp_parallel = 0;   // first-pass moves of box-edge pieces parallel to E
+  std::int64_t warp_centres = 0;    // square centres carried with their corners (among `warped`)
+  std::int64_t warp_rebuilds = 0;   // warp tables rebuilt after freezing points of inverted tetrahedra
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
   std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
 };
@@ -146,7 +147,7 @@ GridPoint united_lo(const BoxKey<3>& key, std::uint8_t block);
 // The P faces the square dispatcher sees for the job's box.
 BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job);
 
-BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                   std::span<const BoxJob> jobs, const BoxMeshOptions& options = {});
+BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
+                   const BoxMeshOptions& options = {});
 
 }  // namespace pqmesh::tet3d

@@ -51,7 +51,7 @@
 //   edge and two-facet boxes   the wedge of E (EdgeCone::status);
 //   vertex box   the status of a ring point shared with a square of the
 //                united box that meets a face (its local model, exact there:
-//                facet_boxes.cpp propagates it over the box surface); exact
+//                vertex_box.cpp propagates it over the box surface); exact
 //                locate() in the domain if none is given. The vertex box's
 //                component is cone(v) ∩ B (Lemma 1); another component of P
 //                may pass through B (the far wall of a narrow slot at its
@@ -118,7 +118,7 @@ class SquareDispatcher {
   // Appends the triangles of π = S ∩ P ∧ b (PointBook ids, right-hand normal
   // +S.n) and returns the case taken (see above). `inside` decides a square
   // meeting no face of a vertex box when not Zero (Negative: inside P, from
-  // the statuses of neighbouring squares, facet_boxes.cpp); else locate().
+  // the statuses of neighbouring squares, vertex_box.cpp); else locate().
   SquareCase triangulate(const FaceSquare& s, const BoxFaces& faces, std::vector<std::array<int, 3>>& out,
                          Sign inside = Sign::Zero);
 

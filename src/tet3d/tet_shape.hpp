@@ -1,6 +1,6 @@
 #pragma once
 // A shape measure of a tetrahedron for choosing between decompositions
-// (the edge box's apex on E, facet_boxes.cpp): the longest edge over the
+// (the edge box's apex on E, edge_box.cpp): the longest edge over the
 // inradius (3 V / total face area), within a constant factor of the aspect
 // ratio of pqmesh/quality.hpp. +infinity unless (a, b, c, d) has positive
 // volume in floating point. Only compared, never a validity decision (those
