@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "plc/report_error.hpp"
 #include "pqmesh/errors.hpp"
 #include "tet3d/warped_crossing.hpp"
 
@@ -61,19 +60,28 @@ EdgeCone::EdgeCone(const Domain3& domain, int edge)
   const Vec3 wf = wing(domain, f_.facet(), e.a, e.b), wg = wing(domain, g_.facet(), e.a, e.b);
   // Convex iff G leaves E towards P's side of F (and then F towards G's).
   const Sign fg = f_.side(wg), gf = g_.side(wf);
-  // A flat edge (coplanar facets that make_domain did not merge): no wedge.
-  // Normally refused up front by SquareDispatcher::refuse_flat_edges with the
-  // reason; here too as the same user error, whoever asks first.
   if (fg == Sign::Zero && gf == Sign::Zero) {
-    const SourceInfo& src = domain.plc.source;
-    pqmesh::detail::throw_domain_error(
-        src, ErrorCode::Unsupported,
-        "edge (" + std::to_string(pqmesh::detail::file_id(src, e.a)) + ", " +
-            std::to_string(pqmesh::detail::file_id(src, e.b)) + ") between facets " +
-            std::to_string(pqmesh::detail::file_id(src, f_.facet())) + " and " +
-            std::to_string(pqmesh::detail::file_id(src, g_.facet())) +
-            " is flat (coplanar facets); the tetrahedral mesher does not support flat edges",
-        {e.a, e.b}, pqmesh::detail::IdKind::Vertex);
+    // Flat: F and G are one oriented plane (make_domain oriented both
+    // outward), split by E's line. P near E is P's side of that plane, the
+    // status of a convex cone; the sign "of G" at a point x of the plane is
+    // replaced by its side of E's line, Negative in F's half-plane (that of
+    // w_F). With c a P vertex off the plane, that side is sign(orient3d(a,
+    // b, c, x)) against sign(orient3d(a, b, c, w_F)) = σ; at the crossing x
+    // of F with segment pq, orient3d(a, b, c, x) = orient3d(a, b, p, q) ·
+    // s_F(p) · s_F(c) in sign, so the crossing formulas below hold with
+    // λ = -(s_F(c) · σ).
+    flat_ = true;
+    for (const Vec3& v : domain.plc.vertices)
+      if (f_.side(v) != Sign::Zero) {
+        off_plane_ = v;
+        break;
+      }
+    const Sign sc = f_.side(off_plane_);
+    half_f_ = orient3d(a_, b_, off_plane_, wf);
+    if (sc == Sign::Zero || half_f_ == Sign::Zero)
+      throw InternalError("tet3d: flat edge " + std::to_string(edge) + " without a vertex off its plane");
+    lambda_ = -(sc * half_f_);
+    return;
   }
   if (fg == Sign::Zero || gf == Sign::Zero || fg != gf)
     throw InternalError("tet3d: edge " + std::to_string(edge) + " is flat or its facets are inconsistently oriented");
@@ -84,6 +92,13 @@ EdgeCone::EdgeCone(const Domain3& domain, int edge)
   if (o == Sign::Zero) throw InternalError("tet3d: edge " + std::to_string(edge) + " has coplanar facets");
   lambda_ = fg * gf * o;
 }
+
+Sign EdgeCone::g_on_f(Vec3 x) const {
+  if (!flat_) return g_.side(x);
+  return -(orient3d(a_, b_, off_plane_, x) * half_f_);
+}
+
+Sign EdgeCone::f_on_g(Vec3 x) const { return flat_ ? -g_on_f(x) : f_.side(x); }
 
 Sign EdgeCone::status(Vec3 p) const {
   const Sign sf = f_.side(p), sg = g_.side(p);
@@ -151,7 +166,8 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
     xyz[i] = w != nullptr ? w->at : grid_coordinates(tree, ring[i]);
     sf[i] = cone.f().side(xyz[i]);
     sg[i] = cone.g().side(xyz[i]);
-    if (sf[i] == Sign::Zero && sg[i] == Sign::Zero) throw InternalError(where + ": a ring point lies on the edge");
+    if (sf[i] == Sign::Zero && (cone.flat() ? cone.g_on_f(xyz[i]) : sg[i]) == Sign::Zero)
+      throw InternalError(where + ": a ring point lies on the edge");
   }
   std::vector<RPoint> r;
   for (std::size_t i = 0; i < k; ++i) {
@@ -159,7 +175,9 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
     RPoint p;
     p.xyz = xyz[i];
     p.status = cone.convex() ? smax(sf[i], sg[i]) : smin(sf[i], sg[i]);
-    if (p.status == Sign::Zero) p.tag = sf[i] == Sign::Zero ? 0 : 1;
+    // On dP: a point of F's plane is F's (a flat edge: of the facet whose half-plane holds it).
+    if (p.status == Sign::Zero)
+      p.tag = sf[i] == Sign::Zero && !(cone.flat() && cone.g_on_f(xyz[i]) == Sign::Positive) ? 0 : 1;
     p.ring = static_cast<int>(i);
     r.push_back(p);
     const bool fc = sf[i] * sf[i1] == Sign::Negative, gc = sg[i] * sg[i1] == Sign::Negative;
@@ -187,14 +205,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       r.push_back(gap);
     };
     mark_if_out();
-    for (const int t : order) {
-      if (t == 0 ? !fc : !gc) continue;
-      const bool on = t == 0 ? on_dp(g_at_f) : on_dp(f_at_g);
-      (t == 0 ? cur_f : cur_g) = -(t == 0 ? cur_f : cur_g);
-      if (!on) {
-        mark_if_out();
-        continue;
-      }
+    auto push_crossing = [&](int t) {
       RPoint x;
       x.status = Sign::Zero;
       x.tag = t;
@@ -211,6 +222,26 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
                      [&] { return pl.crossing(end(i), end(i1)); });
       x.xyz = book.point(x.id);
       r.push_back(x);
+    };
+    if (cone.flat()) {
+      // F's and G's crossings are one point, on dP as a point of the facet
+      // whose half-plane holds it (g_at_f: Negative in F's).
+      if (fc) {
+        push_crossing(g_at_f == Sign::Negative ? 0 : 1);
+        cur_f = cur_g = -cur_f;
+        mark_if_out();
+      }
+      continue;
+    }
+    for (const int t : order) {
+      if (t == 0 ? !fc : !gc) continue;
+      const bool on = t == 0 ? on_dp(g_at_f) : on_dp(f_at_g);
+      (t == 0 ? cur_f : cur_g) = -(t == 0 ? cur_f : cur_g);
+      if (!on) {
+        mark_if_out();
+        continue;
+      }
+      push_crossing(t);
       mark_if_out();
     }
   }

@@ -8,8 +8,12 @@
 //   reflex edge: P = (P's side of F) ∪ (P's side of G).
 // Convexity is exact: the third vertex w_G of a facet triangle of G on E lies
 // on P's side of F iff the edge is convex (orient3d). Zero means a flat edge
-// (coplanar facets that make_domain did not merge, plc/merge_coplanar.hpp):
-// DomainError (Unsupported) naming the edge's vertices and the facets.
+// (coplanar facets that make_domain did not merge because their markers
+// differ, plc/merge_coplanar.hpp): one plane split by E's line, treated as a
+// convex cone whose "sign of G" at a point of the plane is its side of E's
+// line (g_on_f: Negative in F's half-plane), so that every rule below holds
+// with F's and G's crossings of a segment at the same point, exactly one of
+// them on dP.
 // A point p is classified by its two exact signs s_F, s_G: status(p) =
 // max(s_F, s_G) for a convex edge, min(s_F, s_G) for a reflex one
 // (Negative: inside P, Zero: on dP, Positive: outside). π = S ∩ P.
@@ -63,7 +67,8 @@ class EdgeCone {
   // with the edge's two vertices as a side (make_domain's triangulations do).
   EdgeCone(const Domain3& domain, int edge);
   int edge() const { return edge_; }
-  bool convex() const { return convex_; }
+  bool convex() const { return convex_; }  // true for a flat edge
+  bool flat() const { return flat_; }
   const FacetPlane& f() const { return f_; }  // the smaller facet id
   const FacetPlane& g() const { return g_; }
   Vec3 a() const { return a_; }
@@ -74,13 +79,21 @@ class EdgeCone {
   // strictly opposite), and of F at G's crossing; Zero: E meets pq.
   Sign g_at_f_crossing(Vec3 p, Vec3 q) const;
   Sign f_at_g_crossing(Vec3 p, Vec3 q) const;
+  // For x on F's plane: G's sign there (for a flat edge, the side of E's
+  // line: Negative in F's half-plane, Positive in G's, Zero on the line);
+  // f_on_g the same for x on G's plane.
+  Sign g_on_f(Vec3 x) const;
+  Sign f_on_g(Vec3 x) const;
 
  private:
   int edge_ = -1;
   FacetPlane f_, g_;
   Vec3 a_, b_;
   bool convex_ = true;
+  bool flat_ = false;
   Sign lambda_ = Sign::Positive;
+  Vec3 off_plane_;                // flat: the first P vertex off the plane
+  Sign half_f_ = Sign::Positive;  // flat: orient3d(a, b, off_plane_, w_F)
 };
 
 enum class EdgeCutCase : std::uint8_t { Empty, Whole, B, OneFacet, D1, D2Inside, D2On, D2Outside, DTwoPieces };

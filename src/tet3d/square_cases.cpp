@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "plc/edge_topology.hpp"
-#include "plc/report_error.hpp"
 #include "pqmesh/errors.hpp"
 #include "tet3d/square_meets.hpp"
 
@@ -45,56 +43,7 @@ SquareDispatcher::SquareDispatcher(const OctTree& tree, const CornerSet& corners
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
-  refuse_flat_edges();
   check_collinear_edges();
-}
-
-// An edge is flat when the third vertex of a facet triangle of G on it lies
-// on F's plane (exact orient3d): then G lies in F's plane, and as make_domain
-// oriented both outward and no two facets overlap, the dihedral angle is
-// 180°. make_domain merges such facets when their markers agree
-// (plc/merge_coplanar.hpp); what is left is refused here as a user error
-// naming the facets and the edge's vertices, in the file's numbering.
-void SquareDispatcher::refuse_flat_edges() {
-  std::vector<std::array<int, 2>> wing(domain_.edges.size(), {-1, -1});  // per edge: third vertex in facets[0], [1]
-  for (std::size_t t = 0; t < domain_.facet_triangles.size(); ++t) {
-    const auto& tri = domain_.facet_triangles[t];
-    const int owner = domain_.facet_triangle_owner[t];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const int e = pqmesh::detail::find_edge(domain_.edges, tri[k], tri[(k + 1) % 3]);
-      if (e < 0) continue;
-      const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e)];
-      const std::size_t side = de.facets[0] == owner ? 0 : (de.facets[1] == owner ? 1 : 2);
-      if (side < 2) wing[static_cast<std::size_t>(e)][side] = tri[(k + 2) % 3];
-    }
-  }
-  const SourceInfo& src = domain_.plc.source;
-  for (std::size_t e = 0; e < domain_.edges.size(); ++e) {
-    const DomainEdge& de = domain_.edges[e];
-    if (de.facets[0] < 0 || de.facets[1] < 0 || wing[e][1] < 0) continue;
-    if (plane(de.facets[0]).side(domain_.plc.vertices[static_cast<std::size_t>(wing[e][1])]) != Sign::Zero) continue;
-    const int mf = domain_.plc.facets[static_cast<std::size_t>(de.facets[0])].marker;
-    const int mg = domain_.plc.facets[static_cast<std::size_t>(de.facets[1])].marker;
-    const std::string why =
-        mf != mg ? "their markers differ (" + std::to_string(mf) + " and " + std::to_string(mg) + ")"
-                 : "merging them would leave a vertex inside one facet or make its boundary touch itself";
-    // Merged facets are renumbered (merge_coplanar.hpp) but keep a file
-    // line: name facets by line when the input came from a file.
-    const int lf = src.line_of_element(de.facets[0]), lg = src.line_of_element(de.facets[1]);
-    const std::string facets =
-        lf > 0 && lg > 0 ? "the facets at lines " + std::to_string(lf) + " and " + std::to_string(lg)
-                         : "facets " + std::to_string(pqmesh::detail::file_id(src, de.facets[0])) + " and " +
-                               std::to_string(pqmesh::detail::file_id(src, de.facets[1]));
-    pqmesh::detail::throw_domain_error(src, ErrorCode::Unsupported,
-                       "edge (" + std::to_string(pqmesh::detail::file_id(src, de.a)) + ", " +
-                           std::to_string(pqmesh::detail::file_id(src, de.b)) + ") between " + facets +
-                           " is flat (the facets are coplanar, a 180 degree dihedral angle) and the facets were "
-                           "not merged into one because " + why +
-                           "; the tetrahedral mesher does not support flat edges" +
-                           (mf != mg ? std::string(": give the facets the same marker to merge them")
-                                     : std::string(": split the face without a vertex inside it")),
-                       {de.a, de.b}, pqmesh::detail::IdKind::Vertex);
-  }
 }
 
 // Two facets in different planes share edges only on the line where the
@@ -252,13 +201,12 @@ bool SquareDispatcher::half_plane_meets(const EdgeCone& ec, int facet, const Squ
   const bool is_f = facet == ec.f().facet();
   if (!is_f && facet != ec.g().facet()) throw InternalError("tet3d: facet " + std::to_string(facet) + " not on the edge");
   const FacetPlane& x = is_f ? ec.f() : ec.g();
-  const FacetPlane& y = is_f ? ec.g() : ec.f();
   std::array<Sign, 4> sx{};
   for (std::size_t i = 0; i < 4; ++i) sx[i] = x.side(g.corners[i]);
   const Sign bad = ec.convex() ? Sign::Positive : Sign::Negative;  // G's sign off F's part of dP
   for (std::size_t i = 0; i < 4; ++i) {
     const std::size_t j = (i + 1) % 4;
-    if (sx[i] == Sign::Zero && y.side(g.corners[i]) != bad) return true;
+    if (sx[i] == Sign::Zero && (is_f ? ec.g_on_f(g.corners[i]) : ec.f_on_g(g.corners[i])) != bad) return true;
     if (sx[i] * sx[j] == Sign::Negative) {
       const Sign at = is_f ? ec.g_at_f_crossing(g.corners[i], g.corners[j]) : ec.f_at_g_crossing(g.corners[i], g.corners[j]);
       if (at != bad) return true;
@@ -290,7 +238,9 @@ SquareDispatcher::FacetEdgesAt SquareDispatcher::facet_edges_at(int vertex, int 
 // meet B in a piece of another component (the top of the far prong at a slot
 // mouth). The section σ = F's plane ∩ S is a segment whose end points are the
 // corners of S on F's plane and the crossings of F's plane with sides of S;
-// the G_i signs there are exact (orient3d, g_at_f_crossing). σ meets H1 ∪ H2
+// the G_i signs there are exact (orient3d, g_at_f_crossing; for a flat e_i,
+// EdgeCone::g_on_f: e_i's side within F's plane, affine along σ too, with
+// H_i F's half-plane of e_i's line). σ meets H1 ∪ H2
 // iff an end point lies in one of them. For H1 ∩ H2 with no end point in
 // both, but each H_i holding one: the G_i signs are affine along σ, so σ
 // meets H1 ∩ H2 iff the point x1 where σ crosses line(e1) lies in H2; on
@@ -308,18 +258,20 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
   const std::array<int, 2>& e = at.edges;
   const FacetPlane& fp = plane(facet);
   std::array<const EdgeCone*, 2> ec{&cone(e[0]), &cone(e[1])};
-  std::array<const FacetPlane*, 2> gp{};
+  // G_i's sign at a point x of F's plane (for a flat e_i, its side of e_i's line).
+  auto other_sign = [&](std::size_t i, Vec3 x) {
+    return ec[i]->f().facet() == facet ? ec[i]->g_on_f(x) : ec[i]->f_on_g(x);
+  };
   std::array<Sign, 2> bad{};
   std::array<Vec3, 2> far{};  // the other end of e_i
   const Vec3 pv = domain_.plc.vertices[static_cast<std::size_t>(vertex)];
   for (std::size_t i = 0; i < 2; ++i) {
-    gp[i] = ec[i]->f().facet() == facet ? &ec[i]->g() : &ec[i]->f();
     bad[i] = ec[i]->convex() ? Sign::Positive : Sign::Negative;
     const DomainEdge& de = domain_.edges[static_cast<std::size_t>(e[i])];
     far[i] = domain_.plc.vertices[static_cast<std::size_t>(de.a == vertex ? de.b : de.a)];
   }
   // F's angle at v: a2 strictly in H1 (convex), on line(e1) (straight), beyond (reflex).
-  const Sign a2 = gp[0]->side(far[1]);
+  const Sign a2 = other_sign(0, far[1]);
   const bool straight = a2 == Sign::Zero, reflex = a2 == bad[0];
   // End points of σ with their membership in H1, H2.
   std::array<Sign, 4> sf{};
@@ -329,7 +281,7 @@ bool SquareDispatcher::sector_meets(int vertex, int facet, const SquareGeometry&
     const std::size_t j = (i + 1) % 4;
     std::array<bool, 2> in{};
     if (sf[i] == Sign::Zero) {
-      for (std::size_t k = 0; k < 2; ++k) in[k] = gp[k]->side(g.corners[i]) != bad[k];
+      for (std::size_t k = 0; k < 2; ++k) in[k] = other_sign(k, g.corners[i]) != bad[k];
       ends.push_back(in);
     } else if (sf[i] * sf[j] == Sign::Negative) {
       for (std::size_t k = 0; k < 2; ++k) {
@@ -369,10 +321,10 @@ bool SquareDispatcher::reflex_at(int vertex, int facet) {
   if (at.count != 2) return false;
   const std::array<int, 2>& e = at.edges;
   const EdgeCone& c1 = cone(e[0]);
-  const FacetPlane& g1 = c1.f().facet() == facet ? c1.g() : c1.f();
   const DomainEdge& d2 = domain_.edges[static_cast<std::size_t>(e[1])];
   const Vec3 far2 = domain_.plc.vertices[static_cast<std::size_t>(d2.a == vertex ? d2.b : d2.a)];
-  return g1.side(far2) == (c1.convex() ? Sign::Positive : Sign::Negative);
+  const Sign side = c1.f().facet() == facet ? c1.g_on_f(far2) : c1.f_on_g(far2);
+  return side == (c1.convex() ? Sign::Positive : Sign::Negative);
 }
 
 // A square S of v's united box B meeting k >= 2 edges of v (thesis §4.4 has

@@ -156,9 +156,6 @@ class SquareDispatcher {
   bool reflex_at(int vertex, int facet);
   bool separate_edge_pieces(int vertex, const Incidence& m);
   std::string describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const;
-  // Refuses (DomainError, Unsupported) an edge of P between coplanar facets:
-  // its cone is a half-space and Cases B/D have no wedge to work with.
-  void refuse_flat_edges();
   // For each pair of facets sharing several edges: equal convexity.
   void check_collinear_edges();
 

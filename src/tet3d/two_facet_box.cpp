@@ -11,6 +11,10 @@ namespace pqmesh::tet3d {
 // Two-facet box (§4.5.5; see facet_boxes.hpp for the construction).
 void BoxAssembler::two_facet_box(std::int32_t leaf, int edge) {
   const EdgeCone& ec = squares_.cone(edge);
+  // A flat edge's facets are one plane: a box meeting both but not E would
+  // meet other features between them (the octree makes it another kind).
+  if (ec.flat())
+    throw InternalError("tet3d: two-facet box " + std::to_string(leaf) + " at flat edge " + std::to_string(edge));
   const BoxKey<3>& key = tree_.key(leaf);
   std::vector<Tri> tris;
   box_tris(key, squares_.faces_of(BoxKind::TwoFacet, edge), tris);

@@ -410,6 +410,10 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         left = 1;
         return from;
       }
+      if (ec->flat()) {
+        // A flat edge: F and G are one plane, moved off as one facet.
+        return from + ((sf == Sign::Positive ? 1.0 : -1.0) * h / 16) * ec->f().normal();
+      }
       if (ec->convex() && sf == Sign::Negative && sg == Sign::Negative) {
         // Acute interior wedge: orthogonal projection onto its bisector plane.
         const Vec3 m = ec->f().normal() - ec->g().normal();

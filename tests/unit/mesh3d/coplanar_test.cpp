@@ -1,8 +1,8 @@
 // Inputs whose facets are not maximal (ALGORITHM.md, coplanar facets): a
 // straight edge of P with a vertex in its middle (data/3d/cube.obj), a cap
 // given as coplanar pieces with one marker (merged by make_domain,
-// plc/merge_coplanar.hpp), and a flat edge between different markers
-// (refused as unsupported input, never an internal error). Every mesh is
+// plc/merge_coplanar.hpp); flat edges between different markers are tested
+// in flat_edge_test.cpp. Every mesh is
 // checked whole (check_mesh) and its boundary markers are checked against
 // the facet planes (mesh_check_util.hpp).
 #include <gtest/gtest.h>
@@ -11,13 +11,12 @@
 #include <string>
 
 #include "../plc/domain_fixtures.hpp"
+#include "mesh_check_util.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/errors.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "pqmesh/tetmesh.hpp"
 #include "predicates/predicates.hpp"
-#include "mesh_check_util.hpp"
 #include "support/paths.hpp"
 
 namespace pqmesh {
@@ -63,21 +62,6 @@ TEST(Coplanar, CapsInPiecesMeshLikeTheWholeCaps) {
   const TetMeshResult b = tet_mesh(make_domain(whole_plc));
   EXPECT_EQ(a.mesh.tetrahedra.size(), b.mesh.tetrahedra.size());
   EXPECT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
-}
-
-TEST(Coplanar, AFlatEdgeBetweenMarkersIsRefusedByName) {
-  // Bottom markers 1 1 2 2: the flat diagonals (0, 4) and (2, 6) stay edges
-  // of P between the merged halves (facets 0 and 1).
-  const Domain3 d = make_domain(test::block_with_through_hole_in_pieces({1, 1, 2, 2}, {5, 5, 5, 5}));
-  try {
-    tet_mesh(d);
-    FAIL() << "no DomainError";
-  } catch (const DomainError& e) {
-    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
-    const std::string what = e.what();
-    EXPECT_NE(what.find("edge (0, 4) between facets 0 and 1 is flat"), std::string::npos) << what;
-    EXPECT_EQ(e.ids(), (std::vector<std::int64_t>{0, 4}));
-  }
 }
 
 }  // namespace

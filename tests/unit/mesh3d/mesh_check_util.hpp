@@ -7,6 +7,7 @@
 // mesher's own choice; every input marker is used.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -53,6 +54,46 @@ inline void expect_valid_with_markers(const std::string& what, const TetMeshResu
     if (!on_some) break;
   }
   EXPECT_EQ(used, input) << what;
+}
+
+// Stronger marker check for coplanar facets with different markers (flat
+// edges): every boundary triangle's centroid lies in a facet triangle (closed,
+// exact orient2d in the projection dropping the facet normal's dominant axis)
+// of a facet with its marker, and the boundary area per marker equals the
+// input area of the facets with that marker (relative 1e-9: sums of rounded
+// areas). Both are derived from the input, not from the mesher.
+inline void expect_markers_in_their_facets(const std::string& what, const TetMeshResult& r, const Domain3& d) {
+  auto area = [](Vec3 a, Vec3 b, Vec3 c) { return 0.5 * norm(cross(b - a, c - a)); };
+  const auto& P = d.plc.vertices;
+  std::map<int, double> input_area, mesh_area;
+  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t) {
+    const auto& tri = d.facet_triangles[t];
+    input_area[d.plc.facets[static_cast<std::size_t>(d.facet_triangle_owner[t])].marker] +=
+        area(P[tri[0]], P[tri[1]], P[tri[2]]);
+  }
+  std::size_t misplaced = 0;
+  for (std::size_t i = 0; i < r.mesh.faces.size(); ++i) {
+    const int m = r.mesh.face_markers[i];
+    const auto& f = r.mesh.faces[i];
+    const Vec3 a = r.mesh.vertices[f[0]], b = r.mesh.vertices[f[1]], c = r.mesh.vertices[f[2]];
+    mesh_area[m] += area(a, b, c);
+    const Vec3 g = (1.0 / 3) * (a + b + c);
+    bool inside = false;
+    for (std::size_t t = 0; t < d.facet_triangles.size() && !inside; ++t) {
+      const std::size_t owner = static_cast<std::size_t>(d.facet_triangle_owner[t]);
+      if (d.plc.facets[owner].marker != m) continue;
+      const int drop = dominant_axis(d.facet_normals[owner]);
+      const auto& tri = d.facet_triangles[t];
+      const Sign s = orient2d_projected(P[tri[0]], P[tri[1]], P[tri[2]], drop);
+      inside = s != Sign::Zero && orient2d_projected(P[tri[0]], P[tri[1]], g, drop) != -s &&
+               orient2d_projected(P[tri[1]], P[tri[2]], g, drop) != -s &&
+               orient2d_projected(P[tri[2]], P[tri[0]], g, drop) != -s;
+    }
+    misplaced += inside ? 0 : 1;
+  }
+  EXPECT_EQ(misplaced, 0u) << what << ": boundary triangles whose centroid lies in no facet with their marker";
+  for (const auto& [m, want] : input_area)
+    EXPECT_NEAR(mesh_area[m], want, 1e-9 * want) << what << ": boundary area with marker " << m;
 }
 
 }  // namespace pqmesh::test

@@ -26,7 +26,6 @@
 
 #include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 #include "square_test_util.hpp"
 #include "tet3d/cut_square_edge.hpp"
@@ -264,9 +263,12 @@ TEST(CutSquareEdge, ConeSignsByHand) {
 }
 
 // The unit cube with its bottom split along the diagonal (0, 2)
-// (test::cube_with_split_bottom): the edge (0, 2) is flat, which the cone
-// refuses as unsupported input.
-TEST(CutSquareEdge, AFlatEdgeIsUnsupportedInput) {
+// (test::cube_with_split_bottom, facet 0 = (0, 3, 2) where y > x, facet 1 =
+// (0, 2, 1) where x > y): the edge (0, 2) is flat. Its cone is P's side of
+// z = 0 (z > 0), convex; the "sign of G" on the plane is the side of the
+// diagonal, Negative in F's (facet 0's) half y > x; at a crossing it is the
+// side of the crossing point. Expected signs read off the picture.
+TEST(CutSquareEdge, AFlatEdgeSplitsItsPlaneByItsLine) {
   const Domain3 d = make_domain(test::cube_with_split_bottom());
   int flat = -1, crease = -1;
   for (std::size_t e = 0; e < d.edges.size(); ++e) {
@@ -276,13 +278,27 @@ TEST(CutSquareEdge, AFlatEdgeIsUnsupportedInput) {
   ASSERT_GE(flat, 0);
   ASSERT_GE(crease, 0);
   EXPECT_TRUE(EdgeCone(d, crease).convex());
-  try {
-    const EdgeCone cone(d, flat);
-    FAIL() << "no DomainError";
-  } catch (const DomainError& e) {
-    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
-    EXPECT_EQ(e.ids(), (std::vector<std::int64_t>{0, 2}));
-  }
+  EXPECT_FALSE(EdgeCone(d, crease).flat());
+  const EdgeCone cone(d, flat);
+  EXPECT_TRUE(cone.flat());
+  EXPECT_TRUE(cone.convex());
+  EXPECT_EQ(cone.f().facet(), 0);
+  EXPECT_EQ(cone.status({0.3, 0.6, 0.5}), Sign::Negative);
+  EXPECT_EQ(cone.status({0.6, 0.3, 0.5}), Sign::Negative);
+  EXPECT_EQ(cone.status({0.3, 0.6, -0.5}), Sign::Positive);
+  EXPECT_EQ(cone.status({0.6, 0.3, 0}), Sign::Zero);
+  EXPECT_EQ(cone.g_on_f({0.2, 0.8, 0}), Sign::Negative);
+  EXPECT_EQ(cone.g_on_f({0.8, 0.2, 0}), Sign::Positive);
+  EXPECT_EQ(cone.g_on_f({0.5, 0.5, 0}), Sign::Zero);
+  EXPECT_EQ(cone.f_on_g({0.8, 0.2, 0}), Sign::Negative);
+  EXPECT_EQ(cone.f_on_g({0.2, 0.8, 0}), Sign::Positive);
+  // Crossings of z = 0 in either direction, in either half.
+  EXPECT_EQ(cone.g_at_f_crossing({0.2, 0.8, -1}, {0.2, 0.8, 1}), Sign::Negative);
+  EXPECT_EQ(cone.g_at_f_crossing({0.2, 0.8, 1}, {0.3, 0.7, -1}), Sign::Negative);
+  EXPECT_EQ(cone.g_at_f_crossing({0.8, 0.2, 1}, {0.8, 0.2, -1}), Sign::Positive);
+  EXPECT_EQ(cone.f_at_g_crossing({0.8, 0.2, 1}, {0.8, 0.2, -1}), Sign::Negative);
+  EXPECT_EQ(cone.f_at_g_crossing({0.2, 0.8, -1}, {0.2, 0.8, 1}), Sign::Positive);
+  EXPECT_EQ(cone.g_at_f_crossing({0.5, 0.5, -1}, {0.5, 0.5, 1}), Sign::Zero);  // through the edge
 }
 
 }  // namespace

@@ -211,22 +211,21 @@ TEST(SquareCases, FacetsSharingCollinearEdgesUseTheEdgeThatCrossesTheSquare) {
 }
 
 // Facets meeting at a flat edge (coplanar, different markers, so not merged)
-// are refused as a user error naming the edge's vertices and the facets.
-TEST(SquareCases, RefusesAFlatEdgeAsUnsupportedInput) {
+// are accepted; the local model of a square meeting both is P's side of
+// their common plane z = 0 (P is z > 0 there).
+TEST(SquareCases, AFlatEdgeHasTheHalfSpaceAsItsLocalModel) {
   Fixture fx;
   const CornerSet corners(fx.tree, fx.leaves);
   const Domain3 d = make_domain(test::cube_with_split_bottom());
   ASSERT_EQ(d.plc.facets.size(), 7u);  // different markers: the bottom halves stay apart
   PointBook book;
-  try {
-    SquareDispatcher squares(fx.tree, corners, d, book, nullptr);
-    FAIL() << "no DomainError";
-  } catch (const DomainError& e) {
-    EXPECT_EQ(e.code(), ErrorCode::Unsupported);
-    const std::string what = e.what();
-    EXPECT_NE(what.find("edge (0, 2) between facets 0 and 1"), std::string::npos) << what;
-    EXPECT_NE(what.find("markers differ (0 and 1)"), std::string::npos) << what;
-  }
+  SquareDispatcher squares(fx.tree, corners, d, book, nullptr);
+  SquareDispatcher::Incidence m;
+  m.facets = {0, 1};
+  EXPECT_EQ(squares.local_status(m, {0.3, 0.6, 0.5}), Sign::Negative);
+  EXPECT_EQ(squares.local_status(m, {0.6, 0.3, 0.5}), Sign::Negative);
+  EXPECT_EQ(squares.local_status(m, {0.6, 0.3, -0.5}), Sign::Positive);
+  EXPECT_EQ(squares.local_status(m, {0.6, 0.3, 0}), Sign::Zero);
 }
 
 }  // namespace
