@@ -491,6 +491,21 @@ def gen_3d():
     write_tetgen_poly("3d/plate_holes.poly", "plate [0,4]^2 x [0,1/2] with 4 square through-holes", v, f)
     good("3d/plate_holes.poly", "facets with 4 hole loops each (TetGen facet holes), genus 4; volume 6")
 
+    # channel_patches.poly: the channel [0,4] x [0,1] x [0,1] with boundary-condition markers: inlet
+    # x = 0 (3), outlet x = 4 (4), walls and top (2), bottom (1) with a heater patch
+    # [3/2,5/2] x [1/4,3/4] (5) in it. The patch is its own facet and a hole loop of the bottom
+    # (hole point at its centre): the four patch edges are flat edges between coplanar facets with
+    # different markers, which the mesher keeps. Volume 4.
+    v, f = cube_solid((0, 0, 0), (4, 1, 1), markers=(1, 2, 2, 4, 2, 3))
+    v += [(F(3, 2), F(1, 4), F(0)), (F(5, 2), F(1, 4), F(0)), (F(5, 2), F(3, 4), F(0)), (F(3, 2), F(3, 4), F(0))]
+    f[0] = facet(f[0]["loops"] + [[8, 9, 10, 11]], 1, [(F(2), F(1, 2), F(0))])
+    f.append(facet([[8, 11, 10, 9]], 5))
+    assert check_good_solid(v, f, 4) == 16
+    write_tetgen_poly("3d/channel_patches.poly",
+                      "channel [0,4] x [0,1] x [0,1]: inlet 3, outlet 4, walls 2, bottom 1 with a heater patch 5",
+                      v, f)
+    good("3d/channel_patches.poly", "a patch facet inside the bottom with another marker: four flat edges; volume 4")
+
     # cube_through_hole.poly: [0,4]^3 minus the square tunnel [1,3]^2 x [0,4]; volume 64 - 16 = 48.
     # Top and bottom are each 4 coplanar trapezoids (no facet has a hole loop): genus 1 from simple
     # facets, with coplanar neighbouring facets.

@@ -51,6 +51,10 @@ void PrintTo(const Good3& g, std::ostream* out) { *out << g.file; }
 //                area 3/2 + 2c^2, volume area/3 = 1573201/1572864.
 //  plate_holes:  4x4x1/2 plate with four 1x1 holes: 8 + 4*8 = 40 vertices, 2 caps + 4 + 16 walls = 22,
 //                12 + 4*12 = 60 edges, genus 4: T = 80 - 4 + 16 = 92, volume 12/2 = 6.
+//  channel_patches: 4x1x1 box (8 vertices) with a 1 x 1/2 patch (4) in its bottom: 12 vertices,
+//                7 facets (the bottom with the patch as a hole loop, the patch, 5 walls), 12 + 4
+//                edges (the patch's are flat); T = bottom 8 + 2 - 2 = 8, patch 2, walls 5 * 2 = 10:
+//                20; volume 4.
 //  cube_through_hole: 16 vertices, 16 quads; the domain merges the coplanar same-marker quads of
 //                each cap into one facet with a hole loop (TetGen's default), leaving 24 edges;
 //                genus 1: T = 32, volume 64 - 16 = 48.
@@ -76,6 +80,7 @@ const Good3 kGood3[] = {
     {"3d/heat_sink.poly", 72, 38, 108, 1, 140, 409.0 / 16384.0, -1, -1},
     {"3d/star_vertex.poly", 13, 13, 24, 1, 22, 1573201.0 / 1572864.0, -1, -1},
     {"3d/plate_holes.poly", 40, 22, 60, 1, 92, 6.0, -1, -1},
+    {"3d/channel_patches.poly", 12, 7, 16, 1, 20, 4.0, -1, -1},
     {"3d/cube_through_hole.poly", 16, 16, 24, 1, 32, 48.0, -1, -1},
     {"3d/schoenhardt.poly", 6, 8, 12, 1, 8, 887.0 / 1024.0, -1, -1},
     {"3d/fins.poly", 64, 34, 96, 1, 124, 39.0 / 64.0, -1, -1},

@@ -18,7 +18,9 @@
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quality.hpp"
+#include "pqmesh/read_domain.hpp"
 #include "pqmesh/tetmesh.hpp"
+#include "support/paths.hpp"
 #include "support/random_domains.hpp"
 
 namespace pqmesh {
@@ -93,6 +95,14 @@ TEST(FlatEdges, FourFlatEdgesAtAFaceCentre) {
   const Domain3 d = make_domain(cube_with_quartered_faces());
   ASSERT_EQ(d.plc.facets.size(), 24u);
   mesh_and_check("cube, quartered faces", d);
+}
+
+TEST(FlatEdges, ChannelWithAHeaterPatchFromTheCorpus) {
+  // data/3d/channel_patches.poly: the patch (marker 5) is a facet inside the
+  // bottom (marker 1), which has it as a hole loop: four flat edges.
+  const Domain3 d = make_domain(read_plc(test::data_path("3d/channel_patches.poly")));
+  ASSERT_EQ(d.plc.facets.size(), 7u);
+  mesh_and_check("channel_patches.poly", d);
 }
 
 TEST(FlatEdges, CapsOfABlockWithAHoleInTwoMarkers) {
