@@ -86,6 +86,9 @@ struct TetMeshStats {
   std::int64_t edge_jobs = 0, vertex_jobs = 0, two_facet_jobs = 0;
   std::int64_t facet_inside = 0, facet_on = 0, facet_beyond = 0;  // facet boxes per §4.5.4 case
   std::int64_t warped = 0;                                // vertices moved by warping (§4.3, both passes)
+  // Squares of united vertex boxes triangulated in one piece per plane group
+  // (coplanar facets joined by flat edges; docs/ALGORITHM.md §12.4).
+  std::int64_t split_squares = 0;
   // Warping was asked for but the warped boxes threw (a warp that inverts a
   // tetrahedron the freeze loop of tet3d cannot attribute): the mesh is the
   // unwarped one, and this says why. Empty when warping succeeded or was off.

@@ -36,6 +36,7 @@ void BoxAssembler::count_squares() {
   out_.stats.squares_a = squares_.count(SquareCase::A);
   out_.stats.squares_c = squares_.count(SquareCase::C);
   out_.stats.squares_bd = squares_.count(SquareCase::BD);
+  out_.stats.squares_pieces = squares_.count(SquareCase::Pieces);
   out_.stats.vertex_squares_located = squares_.located();
   out_.stats.vertex_squares_by_neighbours = squares_.located_by_neighbours();
 }

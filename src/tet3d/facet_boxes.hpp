@@ -95,6 +95,9 @@ struct FacetBoxStats {
   // Squares per dispatcher case (SquareCase: nothing, A, C, B/D), counted
   // once per asking box (a shared square is counted from both sides).
   std::int64_t squares_nothing = 0, squares_a = 0, squares_c = 0, squares_bd = 0;
+  // Vertex-box squares split into one piece per plane group (SquareCase::Pieces;
+  // each piece is also counted under its own case above).
+  std::int64_t squares_pieces = 0;
   // Vertex-box squares meeting no face: decided from neighbouring squares'
   // local models / by locate() (none expected).
   std::int64_t vertex_squares_by_neighbours = 0, vertex_squares_located = 0;

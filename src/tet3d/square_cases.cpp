@@ -380,6 +380,19 @@ Sign SquareDispatcher::local_status(const Incidence& m, Vec3 p) {
 SquareCase SquareDispatcher::triangulate(const FaceSquare& s, const BoxFaces& faces,
                                          std::vector<std::array<int, 3>>& out, Sign inside_hint) {
   const Incidence m = incidences(s, faces);
+  if (faces.kind == BoxKind::Vertex) {
+    const std::vector<Incidence> pieces = plane_group_pieces(faces.apex, m);
+    if (!pieces.empty()) {
+      for (const Incidence& piece : pieces) triangulate_incidence(s, faces, piece, out, inside_hint);
+      ++counts_[static_cast<std::size_t>(SquareCase::Pieces)];
+      return SquareCase::Pieces;
+    }
+  }
+  return triangulate_incidence(s, faces, m, out, inside_hint);
+}
+
+SquareCase SquareDispatcher::triangulate_incidence(const FaceSquare& s, const BoxFaces& faces, const Incidence& m,
+                                                   std::vector<std::array<int, 3>>& out, Sign inside_hint) {
   const std::vector<int>& me = m.edges;
   const std::vector<int>& mf = m.facets;
 

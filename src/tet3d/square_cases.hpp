@@ -33,6 +33,16 @@
 //                                 piece S ∩ wedge(E) (a notch between two
 //                                 edges leaving the united box through S;
 //                                 conditions in separate_edge_pieces);
+//   M in several plane groups,    one piece per group, each triangulated by
+//     vertex box                  the rules above with the group's facets and
+//                                 flat edges (plane_group_pieces: the groups
+//                                 are the facets at v joined by flat edges,
+//                                 one plane split into marker patches, and
+//                                 every two of them meet at v in a reflex
+//                                 crease whose exterior wedge separates their
+//                                 pieces on S; the neighbour cells hold them
+//                                 as separate components, docs/ALGORITHM.md
+//                                 §12.4 "Flat edges");
 //   anything else                 InternalError naming S and M (a P vertex in
 //                                 S, two facets without a common edge, two
 //                                 edges, ...: the octree's separation, §4.1.7,
@@ -94,7 +104,9 @@ struct BoxFaces {
   std::vector<int> vertices, edges, facets;
 };
 
-enum class SquareCase : std::uint8_t { Nothing, A, C, BD };
+// Pieces: a vertex-box square split by plane groups (each piece is counted
+// under its own case too).
+enum class SquareCase : std::uint8_t { Nothing, A, C, BD, Pieces };
 
 class SquareDispatcher {
  public:
@@ -121,6 +133,18 @@ class SquareDispatcher {
   // the statuses of neighbouring squares, vertex_box.cpp); else locate().
   SquareCase triangulate(const FaceSquare& s, const BoxFaces& faces, std::vector<std::array<int, 3>>& out,
                          Sign inside = Sign::Zero);
+
+  // The facets at P vertex v joined by flat edges at v (coplanar facets with
+  // different markers: one plane split into patches), each group sorted,
+  // groups ordered by their smallest facet; every facet of v is in one.
+  const std::vector<std::vector<int>>& plane_groups(int vertex);
+  // For a square of v's united box whose facets lie in two or more plane
+  // groups at v: one incidence per group (its facets and flat edges in m),
+  // when no crease edge of v is in m and every two of the groups meet at v
+  // in reflex creases only (so their pieces of S are disjoint: the
+  // exterior wedge of the crease lies between them). Empty otherwise,
+  // and always at a vertex without flat edges.
+  std::vector<Incidence> plane_group_pieces(int vertex, const Incidence& m);
 
   const FacetPlane& plane(int facet);
   const EdgeCone& cone(int edge);
@@ -155,6 +179,8 @@ class SquareDispatcher {
   bool sector_meets(int vertex, int facet, const SquareGeometry& g);
   bool reflex_at(int vertex, int facet);
   bool separate_edge_pieces(int vertex, const Incidence& m);
+  SquareCase triangulate_incidence(const FaceSquare& s, const BoxFaces& faces, const Incidence& m,
+                                   std::vector<std::array<int, 3>>& out, Sign inside_hint);
   std::string describe(const FaceSquare& s, const BoxFaces& faces, const Incidence& m) const;
   // For each pair of facets sharing several edges: equal convexity.
   void check_collinear_edges();
@@ -169,7 +195,8 @@ class SquareDispatcher {
   std::map<std::pair<int, int>, std::vector<int>> pair_edges_;  // (f < g) -> edges on both
   std::map<int, std::unique_ptr<FacetPlane>> planes_;
   std::map<int, std::unique_ptr<EdgeCone>> cones_;
-  std::array<std::int64_t, 4> counts_{};
+  std::map<int, std::vector<std::vector<int>>> plane_groups_;  // per vertex, built on first use
+  std::array<std::int64_t, 5> counts_{};
   std::int64_t located_ = 0, located_by_neighbours_ = 0;
 };
 

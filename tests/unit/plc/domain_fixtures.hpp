@@ -41,6 +41,29 @@ inline Plc3 cube_with_split_bottom() {
   return plc;
 }
 
+// The L-shaped prism over (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), z in [0, 1].
+// Its vertical edge over (1,1) is reflex. The side x = 1 (between (1,1) and
+// (1,2)) is split by the diagonal from (1,1,1) to (1,2,0) into two triangles
+// with their own markers. Vertex k lies over polygon vertex k at z = 0, 6 + k
+// at z = 1. Every facet has its own marker, 1..9 in the order listed.
+inline Plc3 l_prism_with_split_side() {
+  Plc3 p;
+  const std::vector<std::array<double, 2>> xy = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for (const double z : {0.0, 1.0})
+    for (const auto& c : xy) p.vertices.push_back({c[0], c[1], z});
+  const std::vector<std::vector<int>> loops = {{0, 5, 4, 3, 2, 1},    // 1 bottom
+                                               {6, 7, 8, 9, 10, 11},  // 2 top
+                                               {0, 1, 7, 6},          // 3 y = 0
+                                               {1, 2, 8, 7},          // 4 x = 2
+                                               {2, 3, 9, 8},          // 5 y = 1
+                                               {3, 4, 9},             // 6 x = 1, lower triangle
+                                               {4, 10, 9},            // 7 x = 1, upper triangle
+                                               {4, 5, 11, 10},        // 8 y = 2
+                                               {5, 0, 6, 11}};        // 9 x = 0
+  for (std::size_t k = 0; k < loops.size(); ++k) p.facets.push_back(Facet3{{loops[k]}, static_cast<int>(k) + 1});
+  return p;
+}
+
 // A box with every facet listed inside out (cavity orientation).
 inline void add_inverted_box(Plc3& plc, Vec3 lo, Vec3 hi) {
   const std::size_t first = plc.facets.size();
