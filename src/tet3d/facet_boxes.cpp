@@ -1,6 +1,7 @@
 #include "tet3d/facet_boxes.hpp"
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -14,6 +15,7 @@
 #include "pqmesh/errors.hpp"
 #include "tet3d/box_assembler.hpp"
 #include "tet3d/tet_shape.hpp"
+#include "tet3d/trial_scope.hpp"
 #include "tet3d/warp.hpp"
 #include "tet3d/warp_candidates.hpp"
 
@@ -62,25 +64,32 @@ BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job) {
 
 namespace {
 
-void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
-  for (std::size_t ji = 0; ji < jobs.size(); ++ji) {
-    const BoxJob& j = jobs[ji];
-    a.set_job(ji, j);
-    if (!tree.is_leaf(j.leaf)) throw InternalError("tet3d: node " + std::to_string(j.leaf) + " is not a leaf");
-    switch (j.kind) {
-      case BoxKind::FromFacet:
-        if (j.facet < 0)
-          a.empty_box(j.leaf);
-        else
-          a.facet_box(j.leaf, j.facet);
-        break;
-      case BoxKind::Empty: a.empty_box(j.leaf); break;
-      case BoxKind::Facet: a.facet_box(j.leaf, j.apex); break;
-      case BoxKind::Edge: a.edge_box(j.leaf, j.apex); break;
-      case BoxKind::Vertex: a.vertex_box(j.leaf, j.apex, j.block); break;
-      case BoxKind::TwoFacet: a.two_facet_box(j.leaf, j.apex); break;
-    }
+void run_job(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs, std::size_t ji) {
+  const BoxJob& j = jobs[ji];
+  a.set_job(ji, j);
+  if (!tree.is_leaf(j.leaf)) throw InternalError("tet3d: node " + std::to_string(j.leaf) + " is not a leaf");
+  switch (j.kind) {
+    case BoxKind::FromFacet:
+      if (j.facet < 0)
+        a.empty_box(j.leaf);
+      else
+        a.facet_box(j.leaf, j.facet);
+      break;
+    case BoxKind::Empty: a.empty_box(j.leaf); break;
+    case BoxKind::Facet: a.facet_box(j.leaf, j.apex); break;
+    case BoxKind::Edge: a.edge_box(j.leaf, j.apex); break;
+    case BoxKind::Vertex: a.vertex_box(j.leaf, j.apex, j.block); break;
+    case BoxKind::TwoFacet: a.two_facet_box(j.leaf, j.apex); break;
   }
+}
+
+void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
+  for (std::size_t ji = 0; ji < jobs.size(); ++ji) run_job(a, tree, jobs, ji);
+}
+
+// The jobs `scope` (ascending), as run_jobs would run them.
+void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs, std::span<const std::int32_t> scope) {
+  for (const std::int32_t ji : scope) run_job(a, tree, jobs, static_cast<std::size_t>(ji));
 }
 
 }  // namespace
@@ -102,6 +111,10 @@ void release_free_heap() {
 }  // namespace
 
 namespace {
+
+// Table rebuilds the warped run may make before it gives up (tet_mesh then
+// keeps the unwarped mesh).
+constexpr std::int64_t kMaxWarpRebuilds = 64;
 
 // One run of the warped (or unwarped) box meshing; `two_apex` allows the
 // two-cone-point edge boxes; `wanted` gets the box vertices of the boxes
@@ -127,23 +140,42 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // edge or facet close to the box face; the thesis's first pass and
     // vertex centring keep them apart, not done here): the moved points of
     // every inverted tetrahedron are frozen (left in place, counted) and the
-    // table rebuilt, until no tetrahedron inverts. Deterministic. The
-    // candidates (plate_holes: ~36 MB of a 130 MB peak) are not kept through
-    // the trial passes: a rebuild makes them again (same list).
+    // table rebuilt, until no tetrahedron inverts. Deterministic.
+    // After a rebuild the trial runs only the jobs the new table can change
+    // (trial_scope.hpp) and those that inverted; when that trial is clean, a
+    // trial of every job decides, and it is the result. The candidates
+    // (plate_holes: ~36 MB of a 130 MB peak) are dropped before every full
+    // trial and kept through the partial ones.
     std::unordered_set<GridPoint, GridPointHash> frozen;
     std::unordered_map<GridPoint, std::uint8_t, GridPointHash> second_only;
     std::vector<EdgeBoxBounds> edge_boxes;
     std::set<std::int32_t> shifted_jobs;
-    for (int round = 0; round < 16; ++round) {
+    std::optional<JobBoxes> job_boxes;  // made at the first rebuild
+    std::optional<WarpCandidates> candidates;
+    std::vector<std::int32_t> scope;  // the partial trial's jobs
+    bool full = true;
+    for (;;) {
       auto trial = std::make_unique<BoxAssembler>(tree, corners, domain, &warps);
       trial->collect_bad();
       trial->allow_two_apex(two_apex);
-      run_jobs(*trial, tree, jobs);
+      if (full)
+        run_jobs(*trial, tree, jobs);
+      else
+        run_jobs(*trial, tree, jobs, scope);
       wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
       if (trial->bad().empty()) {
-        done = std::move(trial);
-        break;
+        if (full) {
+          done = std::move(trial);
+          break;
+        }
+        full = true;
+        candidates.reset();
+        release_free_heap();
+        continue;
       }
+      if (rebuilds == kMaxWarpRebuilds)
+        throw InternalError("tet3d: warp rebuild loop: tetrahedra of job " + std::to_string(trial->bad_jobs().front()) +
+                            " still invert after " + std::to_string(rebuilds) + " rebuilds");
       ++rebuilds;
       // Edge boxes with an inverted cone get their faces through a close
       // box edge translated (warp.cpp, face translations; once per box) and
@@ -165,9 +197,18 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
         for (const auto& [g, axes] : now)
           if (!second_only.emplace(g, axes).second) frozen.insert(g);
       }
+      const std::vector<std::int32_t> inverted = trial->bad_jobs();
       trial.reset();
-      warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
-                                options.reflex_copies, edge_boxes, &second_only);
+      if (!candidates) candidates = warp_candidates(tree, corners, domain, jobs);
+      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates, &frozen, options.reflex_copies, edge_boxes,
+                                         &second_only);
+      if (options.partial_trials) {
+        if (!job_boxes) job_boxes.emplace(tree, jobs);
+        scope = job_boxes->touching(changed_points(warps, next), inverted);
+      }
+      warps = std::move(next);
+      full = !options.partial_trials;
+      if (full) candidates.reset();
       release_free_heap();
     }
     // One decision per shared face (docs/ALGORITHM.md §12.5): a reported

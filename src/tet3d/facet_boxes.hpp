@@ -112,6 +112,10 @@ struct BoxMeshOptions {
   // warp_reflex_left), the behaviour before they were built (kept for the
   // comparison in reflex_slot_copies_test.cpp).
   bool reflex_copies = true;
+  // The rebuild loop's trials after a rebuild run only the jobs the new table
+  // can change (trial_scope.hpp); false: every trial runs every job (the loop
+  // before stop 28, kept for the comparison in rebuild_loop_test.cpp).
+  bool partial_trials = true;
   // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
   // clearances of box vertices outside P, which are no mesh vertices).
   bool keep_warp_table = false;

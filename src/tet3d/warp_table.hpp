@@ -69,6 +69,16 @@ class WarpTable {
       if (key.first == p) return true;
     return false;
   }
+  // Every entry as f(p, warp), in insertion order.
+  template <class F>
+  void for_each(F f) const {
+    for (int id = 0; id < index_.size(); ++id) f(index_.key(id), warps_[static_cast<std::size_t>(id)]);
+  }
+  // Every Fig. 4.7 copy as f(p, facet, at), in no particular order.
+  template <class F>
+  void for_each_copy(F f) const {
+    for (const auto& [key, at] : copies_) f(key.first, key.second, at);
+  }
   std::size_t size() const { return warps_.size(); }
   std::size_t copy_count() const { return copies_.size(); }
   std::int64_t conflicts = 0;     // left: the move would change a side decision

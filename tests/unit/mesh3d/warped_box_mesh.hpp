@@ -26,7 +26,8 @@ struct WarpedBoxRun {
   tet3d::BoxMesh mesh;
 };
 
-inline WarpedBoxRun warped_box_run(const Domain3& d) {
+// `partial_trials`: BoxMeshOptions::partial_trials (the rebuild loop's scope).
+inline WarpedBoxRun warped_box_run(const Domain3& d, bool partial_trials = true) {
   mv3d::OctreeOptions oo;
   oo.separate = true;
   oo.generic_grid = true;
@@ -37,6 +38,7 @@ inline WarpedBoxRun warped_box_run(const Domain3& d) {
   const tet3d::CornerSet corners(*run.builder);
   tet3d::BoxMeshOptions bo;
   bo.warp = true;
+  bo.partial_trials = partial_trials;
   run.mesh = tet3d::mesh_boxes(run.builder->tree(), corners, d, run.plan.jobs, bo);
   return run;
 }
