@@ -128,10 +128,12 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
     std::cout << (k ? ", " : " ") << tet_leaf_kind_name(k) << ' ' << s.leaves_per_kind[static_cast<std::size_t>(k)];
   std::cout << '\n'
             << "boxes      " << s.empty_jobs << " empty (" << s.flush_leaves << " flush), " << s.facet_jobs
-            << " facet (inside " << s.facet_inside << ", on F " << s.facet_on << ", beyond " << s.facet_beyond
-            << "), " << s.edge_jobs << " edge, " << s.vertex_jobs << " vertex, " << s.two_facet_jobs << " two-facet; "
-            << s.touching_leaves << " touching leaves skipped; " << s.warped << " warped vertices\n"
-            << (s.warp_failure.empty() ? "" : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
+            << " facet (inside " << s.facet_inside << ", on F " << s.facet_on << ", beyond " << s.facet_beyond << "), "
+            << s.edge_jobs << " edge, " << s.vertex_jobs << " vertex, " << s.two_facet_jobs << " two-facet; "
+            << s.touching_leaves << " touching leaves skipped; " << s.warped << " warped vertices (" << s.warp_rebuilds
+            << " warp rebuilds)\n"
+            << (s.warp_failure.empty() ? ""
+                                       : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
             << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)
             << ", tetrahedra " << fmt_seconds(s.seconds_tetrahedra) << ", boundary " << fmt_seconds(s.seconds_boundary)
             << "; mesh " << fmt_seconds(run.seconds_mesh) << ", check " << fmt_seconds(run.seconds_check) << ", lfs "

@@ -86,6 +86,9 @@ struct TetMeshStats {
   std::int64_t edge_jobs = 0, vertex_jobs = 0, two_facet_jobs = 0;
   std::int64_t facet_inside = 0, facet_on = 0, facet_beyond = 0;  // facet boxes per §4.5.4 case
   std::int64_t warped = 0;                                // vertices moved by warping (§4.3, both passes)
+  // Warp tables rebuilt because a warp inverted a tetrahedron (the rebuild
+  // loop of tet3d, docs/ALGORITHM.md §12.5); 0 when none inverted.
+  std::int64_t warp_rebuilds = 0;
   // Squares of united vertex boxes triangulated in one piece per plane group
   // (coplanar facets joined by flat edges; docs/ALGORITHM.md §12.4).
   std::int64_t split_squares = 0;

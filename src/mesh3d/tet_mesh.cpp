@@ -117,6 +117,7 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   s.facet_on = boxes.stats.on_facet;
   s.facet_beyond = boxes.stats.beyond;
   s.warped = boxes.warped;
+  s.warp_rebuilds = boxes.warp_rebuilds;
   s.split_squares = boxes.stats.squares_pieces;
   s.seconds_tetrahedra = since(t);
   progress.tetrahedra = static_cast<std::int64_t>(boxes.mesh.tetrahedra.size());

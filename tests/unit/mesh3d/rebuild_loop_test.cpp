@@ -9,7 +9,9 @@
 // in Release: 0.9 s for the boxes with partial trials, 1.7 s with full ones.
 #include <gtest/gtest.h>
 
+#include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
+#include "pqmesh/tetmesh.hpp"
 #include "support/random_domains.hpp"
 #include "warped_box_mesh.hpp"
 
@@ -28,6 +30,17 @@ TEST(RebuildLoop, PartialTrialsMakeTheMeshOfFullTrials) {
     ASSERT_EQ(partial.mesh.vertices[i], full.mesh.vertices[i]) << "vertex " << i;
   EXPECT_EQ(partial.mesh.tetrahedra, full.mesh.tetrahedra);
   EXPECT_LE(test::valid_aspect_times_alpha(d, partial), test::kAspectAlphaC);
+}
+
+// tet_mesh reports the rebuilds (the CLI summary prints them): every-run
+// seed 45 needs one.
+TEST(RebuildLoop, TetMeshReportsTheRebuilds) {
+  const Domain3 d = make_domain(test::random_polyhedron(45, test::every_run_polyhedron_options()));
+  const TetMeshResult r = tet_mesh(d);
+  EXPECT_TRUE(r.stats.warp_failure.empty()) << r.stats.warp_failure;
+  EXPECT_EQ(r.stats.warp_rebuilds, 1);
+  const CheckReport report = check_mesh(r.mesh, d);
+  EXPECT_TRUE(report.valid()) << report.to_text();
 }
 
 }  // namespace
