@@ -131,7 +131,7 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << " facet (inside " << s.facet_inside << ", on F " << s.facet_on << ", beyond " << s.facet_beyond << "), "
             << s.edge_jobs << " edge, " << s.vertex_jobs << " vertex, " << s.two_facet_jobs << " two-facet; "
             << s.touching_leaves << " touching leaves skipped; " << s.warped << " warped vertices (" << s.warp_rebuilds
-            << " warp rebuilds)\n"
+            << " warp rebuilds, " << s.worst_box_rounds << " worst-box rounds)\n"
             << (s.warp_failure.empty() ? ""
                                        : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
             << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)

@@ -89,6 +89,10 @@ struct TetMeshStats {
   // Warp tables rebuilt because a warp inverted a tetrahedron (the rebuild
   // loop of tet3d, docs/ALGORITHM.md §12.5); 0 when none inverted.
   std::int64_t warp_rebuilds = 0;
+  // Rounds of the worst-box freeze kept: after the rebuild loop, a mesh whose
+  // worst tetrahedron is flat has the warps of that tetrahedron's box frozen
+  // while its worst tetrahedron strictly improves (docs/ALGORITHM.md §12.5).
+  std::int64_t worst_box_rounds = 0;
   // Squares of united vertex boxes triangulated in one piece per plane group
   // (coplanar facets joined by flat edges; docs/ALGORITHM.md §12.4).
   std::int64_t split_squares = 0;

@@ -118,6 +118,7 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   s.facet_beyond = boxes.stats.beyond;
   s.warped = boxes.warped;
   s.warp_rebuilds = boxes.warp_rebuilds;
+  s.worst_box_rounds = boxes.worst_box_rounds;
   s.split_squares = boxes.stats.squares_pieces;
   s.seconds_tetrahedra = since(t);
   progress.tetrahedra = static_cast<std::int64_t>(boxes.mesh.tetrahedra.size());

@@ -31,6 +31,16 @@ double BoxAssembler::worst_shape() const {
   return worst;
 }
 
+std::vector<double> BoxAssembler::job_worst_shapes(std::size_t job_count) const {
+  std::vector<double> worst(job_count, 0.0);
+  for (std::size_t i = 0; i < out_.mesh.tetrahedra.size(); ++i) {
+    const auto& t = out_.mesh.tetrahedra[i];
+    double& w = worst.at(static_cast<std::size_t>(out_.tet_job[i]));
+    w = std::max(w, tet_shape(book_.point(t[0]), book_.point(t[1]), book_.point(t[2]), book_.point(t[3])));
+  }
+  return worst;
+}
+
 void BoxAssembler::count_squares() {
   out_.stats.squares_nothing = squares_.count(SquareCase::Nothing);
   out_.stats.squares_a = squares_.count(SquareCase::A);

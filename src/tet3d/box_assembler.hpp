@@ -56,6 +56,9 @@ class BoxAssembler {
   // The largest tet_shape over the tetrahedra made so far (+infinity for one
   // flat in floating point).
   double worst_shape() const;
+  // Per job (of `job_count`), the largest tet_shape of its tetrahedra made
+  // so far; 0 for a job without any.
+  std::vector<double> job_worst_shapes(std::size_t job_count) const;
   const std::vector<GridPoint>& bad() const { return bad_; }
   // Per bad() point: bit a set when it lies on the low face of the inverted
   // tetrahedron's box with normal axis a, bit 3 + a on its high face.

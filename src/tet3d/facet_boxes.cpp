@@ -8,16 +8,15 @@
 #include <unordered_set>
 #include <utility>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include "pqmesh/errors.hpp"
 #include "tet3d/box_assembler.hpp"
+#include "tet3d/free_heap.hpp"
+#include "tet3d/job_runs.hpp"
 #include "tet3d/tet_shape.hpp"
 #include "tet3d/trial_scope.hpp"
 #include "tet3d/warp.hpp"
 #include "tet3d/warp_candidates.hpp"
+#include "tet3d/worst_box_freeze.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -64,54 +63,6 @@ BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job) {
 
 namespace {
 
-void run_job(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs, std::size_t ji) {
-  const BoxJob& j = jobs[ji];
-  a.set_job(ji, j);
-  if (!tree.is_leaf(j.leaf)) throw InternalError("tet3d: node " + std::to_string(j.leaf) + " is not a leaf");
-  switch (j.kind) {
-    case BoxKind::FromFacet:
-      if (j.facet < 0)
-        a.empty_box(j.leaf);
-      else
-        a.facet_box(j.leaf, j.facet);
-      break;
-    case BoxKind::Empty: a.empty_box(j.leaf); break;
-    case BoxKind::Facet: a.facet_box(j.leaf, j.apex); break;
-    case BoxKind::Edge: a.edge_box(j.leaf, j.apex); break;
-    case BoxKind::Vertex: a.vertex_box(j.leaf, j.apex, j.block); break;
-    case BoxKind::TwoFacet: a.two_facet_box(j.leaf, j.apex); break;
-  }
-}
-
-void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs) {
-  for (std::size_t ji = 0; ji < jobs.size(); ++ji) run_job(a, tree, jobs, ji);
-}
-
-// The jobs `scope` (ascending), as run_jobs would run them.
-void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs, std::span<const std::int32_t> scope) {
-  for (const std::int32_t ji : scope) run_job(a, tree, jobs, static_cast<std::size_t>(ji));
-}
-
-}  // namespace
-
-namespace {
-
-// The candidate stage's free blocks (the candidate list is a few large
-// arrays since warp_candidates.hpp, but the square scratch and the hash
-// nodes of the table passes are small blocks) stay in glibc's heap, and the
-// pass after them allocates its tables as fresh mappings, so the freed pages
-// would count twice in the peak (plate_holes without the trim: +3.4 MB). They go back to the system here (glibc only;
-// elsewhere a no-op).
-void release_free_heap() {
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-}
-
-}  // namespace
-
-namespace {
-
 // Table rebuilds the warped run may make before it gives up (tet_mesh then
 // keeps the unwarped mesh).
 constexpr std::int64_t kMaxWarpRebuilds = 64;
@@ -125,8 +76,9 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
                         std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex,
                         std::unordered_set<GridPoint, GridPointHash>& wanted,
                         std::unordered_set<GridPoint, GridPointHash>& held) {
+  const BoxPass pass{tree, corners, domain, jobs, two_apex};
   WarpTable warps;
-  std::int64_t rebuilds = 0;
+  std::int64_t rebuilds = 0, worst_box_rounds = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
   // exactly the tetrahedra the final pass would make (same table, same job
   // order; collect mode differs only where a tetrahedron inverts), so it is
@@ -155,13 +107,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     std::vector<std::int32_t> scope;  // the partial trial's jobs
     bool full = true;
     for (;;) {
-      auto trial = std::make_unique<BoxAssembler>(tree, corners, domain, &warps);
-      trial->collect_bad();
-      trial->allow_two_apex(two_apex);
-      if (full)
-        run_jobs(*trial, tree, jobs);
-      else
-        run_jobs(*trial, tree, jobs, scope);
+      auto trial = full ? full_trial(pass, warps) : partial_trial(pass, warps, scope);
       wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
       if (trial->bad().empty()) {
         if (full) {
@@ -224,6 +170,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // The finished trial is dropped before the other table is built (the
     // candidates and a mesh are a large part of the peak memory); when that
     // table loses, the final pass below remakes this mesh.
+    bool wider_won = false;
     if (done && warps.out_of_face_left > 0) {
       const double worst_before = done->worst_shape();
       done.reset();
@@ -232,16 +179,21 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
                                           options.reflex_copies, edge_boxes, &second_only, true);
       release_free_heap();
       if (wider.out_of_face > 0) {
-        auto trial = std::make_unique<BoxAssembler>(tree, corners, domain, &wider);
-        trial->collect_bad();
-        trial->allow_two_apex(two_apex);
-        run_jobs(*trial, tree, jobs);
+        std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
+        auto trial = full_trial(pass, warps);
         wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
         if (trial->bad().empty() && trial->worst_shape() < worst_before) {
-          warps = std::move(wider);
           done = std::move(trial);
+          wider_won = true;
+        } else {
+          trial.reset();
+          std::swap(warps, wider);
         }
       }
+    }
+    if (options.freeze_worst_box) {
+      const WarpRecipe recipe{options.reflex_copies, edge_boxes, &second_only, wider_won};
+      worst_box_rounds = freeze_worst_boxes(pass, recipe, warps, frozen, done, wanted);
     }
     for (const GridPoint& g : frozen) held.insert(g);
     for (const auto& [g, axes] : second_only) held.insert(g);
@@ -266,6 +218,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   out.warp_inverting_left = warps.frozen_left;
   out.warp_first_pass = warps.first_pass;
   out.warp_rebuilds = rebuilds;
+  out.worst_box_rounds = worst_box_rounds;
   out.warp_parallel_left = warps.parallel_left;
   out.warp_parallel = warps.parallel;
   out.warp_centres = warps.centres;

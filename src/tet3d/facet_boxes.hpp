@@ -116,6 +116,12 @@ struct BoxMeshOptions {
   // can change (trial_scope.hpp); false: every trial runs every job (the loop
   // before stop 28, kept for the comparison in rebuild_loop_test.cpp).
   bool partial_trials = true;
+  // After the rebuild loop, a table whose worst tetrahedron is flat gets the
+  // warps of its worst box frozen while that strictly improves the worst
+  // tetrahedron (worst_box_freeze.hpp); false: the table of the rebuild loop
+  // is kept (the behaviour before stop 29, kept for the comparison in
+  // worst_box_freeze_test.cpp).
+  bool freeze_worst_box = true;
   // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
   // clearances of box vertices outside P, which are no mesh vertices).
   bool keep_warp_table = false;
@@ -140,6 +146,7 @@ struct BoxMesh {
   std::int64_t warp_parallel = 0;   // first-pass moves of box-edge pieces parallel to E
   std::int64_t warp_centres = 0;    // square centres carried with their corners (among `warped`)
   std::int64_t warp_rebuilds = 0;   // warp tables rebuilt after freezing points of inverted tetrahedra
+  std::int64_t worst_box_rounds = 0;  // worst-box freeze rounds kept (worst_box_freeze.hpp)
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
   std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
 };

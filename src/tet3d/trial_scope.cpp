@@ -48,6 +48,13 @@ JobBoxes::JobBoxes(const OctTree& tree, std::span<const BoxJob> jobs) {
   }
 }
 
+bool JobBoxes::holds(std::int32_t j, const GridPoint& p) const {
+  const GridPoint &lo = lo_.at(static_cast<std::size_t>(j)), &hi = hi_.at(static_cast<std::size_t>(j));
+  for (std::size_t a = 0; a < 3; ++a)
+    if (p.f[a] < lo.f[a] || hi.f[a] < p.f[a]) return false;
+  return true;
+}
+
 std::vector<std::int32_t> JobBoxes::touching(std::span<const GridPoint> points,
                                              std::span<const std::int32_t> also) const {
   std::vector<std::int32_t> out(also.begin(), also.end());

@@ -31,6 +31,8 @@ class JobBoxes {
   // The jobs, ascending, whose closed box holds a point of `points` (sorted
   // as changed_points returns them) or that are listed in `also`.
   std::vector<std::int32_t> touching(std::span<const GridPoint> points, std::span<const std::int32_t> also) const;
+  // Whether job j's closed box holds p.
+  bool holds(std::int32_t j, const GridPoint& p) const;
 
  private:
   std::vector<GridPoint> lo_, hi_;  // per job

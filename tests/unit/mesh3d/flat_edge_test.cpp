@@ -20,6 +20,7 @@
 #include "pqmesh/quality.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "pqmesh/tetmesh.hpp"
+#include "support/flat_edge_domains.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
 
@@ -75,24 +76,12 @@ Plc3 cube_with_quartered_faces() {
   return p;
 }
 
-// The domain with every facet triangle of make_domain's triangulation made a
-// facet with its own marker: every diagonal of a facet becomes a flat edge.
-Plc3 facet_triangles_as_facets(const Domain3& d) {
-  Plc3 p;
-  p.vertices = d.plc.vertices;
-  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t) {
-    const auto& tri = d.facet_triangles[t];
-    p.facets.push_back({{{tri[0], tri[1], tri[2]}}, 100 + static_cast<int>(t)});
-  }
-  return p;
-}
-
 // Every-run random polyhedron `seed` (tests/support/random_domains.hpp) with
 // every facet triangle its own facet, meshed and checked.
 TetMeshStats mesh_every_run_seed_as_triangles(std::uint64_t seed) {
-  const Domain3 base = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
-  const Domain3 d = make_domain(facet_triangles_as_facets(base));
-  EXPECT_EQ(d.plc.facets.size(), base.facet_triangles.size());
+  const Domain3 d = test::every_run_seed_as_triangles(seed);
+  EXPECT_EQ(d.plc.facets.size(),
+            make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options())).facet_triangles.size());
   return mesh_and_check("every-run seed " + std::to_string(seed) + ", triangles", d);
 }
 

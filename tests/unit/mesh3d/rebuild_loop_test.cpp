@@ -20,8 +20,10 @@ namespace {
 
 TEST(RebuildLoop, PartialTrialsMakeTheMeshOfFullTrials) {
   const Domain3 d = make_domain(test::random_polyhedron(38, test::every_run_polyhedron_options()));
-  const tet3d::BoxMesh partial = test::warped_box_run(d, true).mesh;
-  const tet3d::BoxMesh full = test::warped_box_run(d, false).mesh;
+  tet3d::BoxMeshOptions full_trials = test::warped_options();
+  full_trials.partial_trials = false;
+  const tet3d::BoxMesh partial = test::warped_box_run(d).mesh;
+  const tet3d::BoxMesh full = test::warped_box_run(d, full_trials).mesh;
   EXPECT_GE(partial.warp_rebuilds, 2);
   EXPECT_EQ(partial.warp_rebuilds, full.warp_rebuilds);
   EXPECT_EQ(partial.warp_inverting_left, full.warp_inverting_left);

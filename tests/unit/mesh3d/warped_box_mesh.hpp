@@ -26,8 +26,14 @@ struct WarpedBoxRun {
   tet3d::BoxMesh mesh;
 };
 
-// `partial_trials`: BoxMeshOptions::partial_trials (the rebuild loop's scope).
-inline WarpedBoxRun warped_box_run(const Domain3& d, bool partial_trials = true) {
+// tet_mesh's box options: warping on, the rest at their defaults.
+inline tet3d::BoxMeshOptions warped_options() {
+  tet3d::BoxMeshOptions bo;
+  bo.warp = true;
+  return bo;
+}
+
+inline WarpedBoxRun warped_box_run(const Domain3& d, const tet3d::BoxMeshOptions& bo = warped_options()) {
   mv3d::OctreeOptions oo;
   oo.separate = true;
   oo.generic_grid = true;
@@ -36,9 +42,6 @@ inline WarpedBoxRun warped_box_run(const Domain3& d, bool partial_trials = true)
   run.builder->build();
   run.plan = mesh3d::plan_all_kinds(*run.builder);
   const tet3d::CornerSet corners(*run.builder);
-  tet3d::BoxMeshOptions bo;
-  bo.warp = true;
-  bo.partial_trials = partial_trials;
   run.mesh = tet3d::mesh_boxes(run.builder->tree(), corners, d, run.plan.jobs, bo);
   return run;
 }

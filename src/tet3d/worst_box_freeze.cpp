@@ -1,0 +1,100 @@
+#include "tet3d/worst_box_freeze.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include "tet3d/free_heap.hpp"
+#include "tet3d/warp_candidates.hpp"
+
+namespace pqmesh::tet3d {
+
+namespace {
+
+// The moved points (an entry or a Fig. 4.7 copy) of `warps` in job j's
+// closed box that `frozen` lacks, sorted.
+std::vector<GridPoint> moved_in_box(const WarpTable& warps, const JobBoxes& boxes, std::int32_t j,
+                                    const GridPointSet& frozen) {
+  std::vector<GridPoint> out;
+  auto take = [&](const GridPoint& p) {
+    if (boxes.holds(j, p) && frozen.count(p) == 0) out.push_back(p);
+  };
+  warps.for_each([&](const GridPoint& p, const Warp&) { take(p); });
+  warps.for_each_copy([&](const GridPoint& p, int, Vec3) { take(p); });
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+void note_wanted(const BoxAssembler& a, GridPointSet& wanted) {
+  wanted.insert(a.two_apex_points().begin(), a.two_apex_points().end());
+}
+
+}  // namespace
+
+std::int64_t freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
+                                std::unique_ptr<BoxAssembler>& done, GridPointSet& wanted) {
+  if (!done) {
+    done = full_trial(pass, warps);
+    note_wanted(*done, wanted);
+    if (!done->bad().empty()) {  // not the caller's clean table: leave it to the final pass
+      done.reset();
+      return 0;
+    }
+  }
+  if (done->worst_shape() <= kFlatWorst) return 0;
+  std::vector<double> shapes = done->job_worst_shapes(pass.jobs.size());
+  const double start = *std::max_element(shapes.begin(), shapes.end());
+  const JobBoxes boxes(pass.tree, pass.jobs);
+  std::optional<WarpCandidates> candidates;
+  // The table of the last kept round (none yet: `warps`) and its frozen set.
+  std::optional<WarpTable> kept;
+  GridPointSet kept_frozen = frozen;
+  std::int64_t rounds = 0;
+  for (int round = 0; round < kWorstBoxRounds; ++round) {
+    const WarpTable& table = kept ? *kept : warps;
+    // The first job of the largest shape.
+    const auto worst_job = static_cast<std::int32_t>(std::max_element(shapes.begin(), shapes.end()) - shapes.begin());
+    const double worst = shapes[static_cast<std::size_t>(worst_job)];
+    if (worst <= kFlatWorst) break;
+    const std::vector<GridPoint> points = moved_in_box(table, boxes, worst_job, kept_frozen);
+    if (points.empty()) break;
+    GridPointSet next_frozen = kept_frozen;
+    next_frozen.insert(points.begin(), points.end());
+    if (!candidates) candidates = warp_candidates(pass.tree, pass.corners, pass.domain, pass.jobs);
+    WarpTable next = warp_box_vertices(pass.tree, pass.corners, pass.domain, *candidates, &next_frozen,
+                                       recipe.reflex_copies, recipe.edge_boxes, recipe.second_only, recipe.out_of_face);
+    const std::vector<std::int32_t> scope = boxes.touching(changed_points(table, next), {});
+    const auto trial = partial_trial(pass, next, scope);
+    note_wanted(*trial, wanted);
+    if (!trial->bad().empty()) break;
+    const std::vector<double> tried = trial->job_worst_shapes(pass.jobs.size());
+    if (!std::all_of(scope.begin(), scope.end(),
+                     [&](std::int32_t j) { return tried[static_cast<std::size_t>(j)] < worst; }))
+      break;
+    for (const std::int32_t j : scope) shapes[static_cast<std::size_t>(j)] = tried[static_cast<std::size_t>(j)];
+    kept = std::move(next);
+    kept_frozen = std::move(next_frozen);
+    ++rounds;
+  }
+  if (rounds == 0) return 0;
+  // The trial of every job decides (the partial trials rely on
+  // trial_scope.hpp's locality, as the rebuild loop does). The old trial and
+  // the candidates go first: a mesh is about half the peak memory.
+  done.reset();
+  candidates.reset();
+  release_free_heap();
+  std::swap(warps, *kept);  // the trial's assembler keeps a pointer to `warps`
+  auto full = full_trial(pass, warps);
+  note_wanted(*full, wanted);
+  if (!full->bad().empty() || !(full->worst_shape() < start)) {
+    full.reset();
+    std::swap(warps, *kept);
+    return 0;  // `done` stays null: the caller remakes it
+  }
+  frozen = std::move(kept_frozen);
+  done = std::move(full);
+  return rounds;
+}
+
+}  // namespace pqmesh::tet3d

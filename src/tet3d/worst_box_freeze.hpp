@@ -1,0 +1,52 @@
+#pragma once
+// Freezing the worst box's warps (docs/ALGORITHM.md §12.5, "worst-box
+// freeze"). The rebuild loop of facet_boxes.cpp stops at the first table on
+// which no tetrahedron inverts; a warp it keeps can still bend a face of an
+// edge box to within a sliver of the box's apex (flat-edge stress seeds 49
+// and 100: aspect ratio x alpha above 20,000). When the worst tetrahedron of
+// that table is flat (tet_shape above kFlatWorst), this pass freezes every
+// moved point of the worst tetrahedron's box, rebuilds the table and tries
+// the jobs it changes. A round is kept only when nothing inverts and every
+// tried job's worst tetrahedron is strictly better than the mesh's worst
+// before the round, so the mesh's worst tetrahedron strictly improves; a
+// trial of every job then decides, as in the rebuild loop. Runs below the
+// threshold do no extra work and keep their bytes.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "tet3d/job_runs.hpp"
+#include "tet3d/trial_scope.hpp"
+#include "tet3d/warp.hpp"
+
+namespace pqmesh::tet3d {
+
+using GridPointSet = std::unordered_set<GridPoint, GridPointHash>;
+
+// What the rebuild loop made the accepted table from, besides its frozen set
+// (warp_box_vertices' parameters of the same names).
+struct WarpRecipe {
+  bool reflex_copies = true;
+  std::span<const EdgeBoxBounds> edge_boxes;
+  const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr;
+  bool out_of_face = false;
+};
+
+// A float threshold that only decides whether to look for a better table
+// (tet_shape is about twice the aspect ratio; the accepted meshes of the test
+// inputs stay below it but for a few).
+inline constexpr double kFlatWorst = 4096;
+// Rounds tried at most, each one table build and one partial trial.
+inline constexpr int kWorstBoxRounds = 3;
+
+// `done`: the trial of every job on `warps` (no inversions), or null when
+// the caller will remake it. On success `warps`, `frozen` and `done` are the
+// better table, its frozen set and its trial of every job, and the rounds
+// kept are returned; otherwise they are unchanged, except that `done` may be
+// null. `wanted` gets every trial's two_apex_points.
+std::int64_t freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
+                                std::unique_ptr<BoxAssembler>& done, GridPointSet& wanted);
+
+}  // namespace pqmesh::tet3d

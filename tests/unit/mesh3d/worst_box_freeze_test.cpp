@@ -1,0 +1,84 @@
+// The worst-box freeze (tet3d/worst_box_freeze.hpp, docs/ALGORITHM.md §12.5):
+// after the rebuild loop, a mesh whose worst tetrahedron is flat has the
+// moved points of that tetrahedron's box frozen, round by round, while the
+// worst tetrahedron strictly improves; a run below the threshold keeps its
+// mesh. Every mesh here is checked (valid_aspect_times_alpha, check_mesh).
+//
+// The flat-edge stress seeds 100 and 49 (every-run seeds with every facet
+// triangle its own facet, flat_edge_test.cpp) are the inputs it was built
+// for: the rebuild loop's table leaves an edge box's face bent to within a
+// sliver of its apex (aspect ratio x alpha 67,513 and 21,621, measured at
+// stop 28).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "support/flat_edge_domains.hpp"
+#include "support/random_domains.hpp"
+#include "tet3d/worst_box_freeze.hpp"
+#include "warped_box_mesh.hpp"
+
+namespace pqmesh {
+namespace {
+
+tet3d::BoxMeshOptions without_freeze() {
+  tet3d::BoxMeshOptions bo = test::warped_options();
+  bo.freeze_worst_box = false;
+  return bo;
+}
+
+TEST(WorstBoxFreeze, BringsFlatSeed100WithinTheConstant) {
+  const Domain3 d = test::every_run_seed_as_triangles(100);
+  const tet3d::BoxMesh before = test::warped_box_run(d, without_freeze()).mesh;
+  const double before_product = test::valid_aspect_times_alpha(d, before);
+  EXPECT_EQ(before.worst_box_rounds, 0);
+  // The input this pass exists for: above C without it.
+  EXPECT_GT(before_product, test::kAspectAlphaC);
+
+  const tet3d::BoxMesh after = test::warped_box_run(d).mesh;
+  const double after_product = test::valid_aspect_times_alpha(d, after);
+  EXPECT_GE(after.worst_box_rounds, 1);
+  EXPECT_LE(after.worst_box_rounds, tet3d::kWorstBoxRounds);
+  EXPECT_LT(after_product, before_product);
+  EXPECT_LE(after_product, test::kAspectAlphaC);
+  std::printf("flat seed 100: aspect * alpha %.1f -> %.1f in %lld rounds\n", before_product, after_product,
+              static_cast<long long>(after.worst_box_rounds));
+  // The rebuild loop's work is the same; the freeze only adds frozen points.
+  EXPECT_EQ(after.warp_rebuilds, before.warp_rebuilds);
+  EXPECT_GT(after.warp_inverting_left, before.warp_inverting_left);
+}
+
+// Through tet_mesh, with the boundary and its markers: flat seed 49.
+TEST(WorstBoxFreeze, TetMeshReportsTheRoundsOnFlatSeed49) {
+  const Domain3 d = test::every_run_seed_as_triangles(49);
+  const TetMeshResult r = tet_mesh(d);
+  EXPECT_TRUE(r.stats.warp_failure.empty()) << r.stats.warp_failure;
+  EXPECT_GE(r.stats.worst_box_rounds, 1);
+  const CheckReport report = check_mesh(r.mesh, d);
+  EXPECT_TRUE(report.valid()) << report.to_text();
+  const double product =
+      test::aspect_times_alpha(quality_report(r.mesh).aspect_ratio.max, compute_alpha(d.plc).radians);
+  EXPECT_LE(product, test::kAspectAlphaC);
+  std::printf("flat seed 49: %zu tets, aspect * alpha %.1f after %lld rounds\n", r.mesh.tetrahedra.size(), product,
+              static_cast<long long>(r.stats.worst_box_rounds));
+}
+
+// Every-run seed 45 (the every-run family's worst, aspect ratio x alpha 990)
+// stays below the threshold: the same mesh, byte for byte, with the pass on.
+TEST(WorstBoxFreeze, LeavesARunBelowTheThresholdAlone) {
+  const Domain3 d = make_domain(test::random_polyhedron(45, test::every_run_polyhedron_options()));
+  const tet3d::BoxMesh on = test::warped_box_run(d).mesh;
+  const tet3d::BoxMesh off = test::warped_box_run(d, without_freeze()).mesh;
+  EXPECT_EQ(on.worst_box_rounds, 0);
+  ASSERT_EQ(on.mesh.vertices.size(), off.mesh.vertices.size());
+  for (std::size_t i = 0; i < on.mesh.vertices.size(); ++i)
+    ASSERT_EQ(on.mesh.vertices[i], off.mesh.vertices[i]) << "vertex " << i;
+  EXPECT_EQ(on.mesh.tetrahedra, off.mesh.tetrahedra);
+  EXPECT_LE(test::valid_aspect_times_alpha(d, on), test::kAspectAlphaC);
+}
+
+}  // namespace
+}  // namespace pqmesh
