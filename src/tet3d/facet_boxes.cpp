@@ -67,15 +67,21 @@ namespace {
 // keeps the unwarped mesh).
 constexpr std::int64_t kMaxWarpRebuilds = 64;
 
+// What one run tells mesh_boxes besides its mesh: `wanted`, the box
+// vertices of the boxes for which a trial or the final pass had a valid
+// two-point construction (allowed or not); `held`, the grid points the
+// rebuild loop froze or limited to their box faces; `unfrozen_worst_job`,
+// the job of the worst tetrahedron before the worst-box freeze when it kept
+// a round (-1 otherwise).
+struct PassNotes {
+  std::unordered_set<GridPoint, GridPointHash> wanted, held;
+  std::int32_t unfrozen_worst_job = -1;
+};
+
 // One run of the warped (or unwarped) box meshing; `two_apex` allows the
-// two-cone-point edge boxes; `wanted` gets the box vertices of the boxes
-// for which a trial or the final pass had a valid one (allowed or not),
-// `held` the grid points the rebuild loop froze or limited to their box
-// faces.
+// two-cone-point edge boxes.
 BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                        std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex,
-                        std::unordered_set<GridPoint, GridPointHash>& wanted,
-                        std::unordered_set<GridPoint, GridPointHash>& held) {
+                        std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex, PassNotes& notes) {
   const BoxPass pass{tree, corners, domain, jobs, two_apex};
   WarpTable warps;
   std::int64_t rebuilds = 0, worst_box_rounds = 0;
@@ -108,7 +114,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     bool full = true;
     for (;;) {
       auto trial = full ? full_trial(pass, warps) : partial_trial(pass, warps, scope);
-      wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
+      notes.wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
       if (trial->bad().empty()) {
         if (full) {
           done = std::move(trial);
@@ -181,7 +187,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       if (wider.out_of_face > 0) {
         std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
         auto trial = full_trial(pass, warps);
-        wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
+        notes.wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
         if (trial->bad().empty() && trial->worst_shape() < worst_before) {
           done = std::move(trial);
           wider_won = true;
@@ -191,18 +197,23 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
         }
       }
     }
+    // The notes are the rebuild loop's, not the freeze's: mesh_boxes asks
+    // them about the box that was worst before the freeze, whose moved points
+    // the freeze holds by construction.
+    for (const GridPoint& g : frozen) notes.held.insert(g);
+    for (const auto& [g, axes] : second_only) notes.held.insert(g);
     if (options.freeze_worst_box) {
       const WarpRecipe recipe{options.reflex_copies, edge_boxes, &second_only, wider_won};
-      worst_box_rounds = freeze_worst_boxes(pass, recipe, warps, frozen, done, wanted);
+      const WorstBoxFreeze freeze = freeze_worst_boxes(pass, recipe, warps, frozen, done);
+      worst_box_rounds = freeze.rounds;
+      notes.unfrozen_worst_job = freeze.unfrozen_worst_job;
     }
-    for (const GridPoint& g : frozen) held.insert(g);
-    for (const auto& [g, axes] : second_only) held.insert(g);
   }
   if (!done) {
     done = std::make_unique<BoxAssembler>(tree, corners, domain, options.warp ? &warps : nullptr);
     done->allow_two_apex(two_apex);
     run_jobs(*done, tree, jobs);
-    wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
+    notes.wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }
   BoxAssembler& a = *done;
   a.count_squares();
@@ -272,23 +283,27 @@ bool job_touches(const BoxMesh& m, std::int32_t job, const std::unordered_set<Gr
 // compared; both meshes are valid by exact orient3d) is strictly better.
 // Otherwise the first run is remade (not kept meanwhile: a mesh is about
 // half the peak memory). Every other run does no extra work and keeps its
-// bytes; no run gets a worse worst tetrahedron.
+// bytes; no run gets a worse worst tetrahedron. When the worst-box freeze
+// kept a round, the box asked about is the one that was worst before it, so
+// the freeze never adds a run (flat seed 70: the freeze's new worst box
+// holds such a point, and asking about it took the box stage from 14 s to
+// 63 s for a two-point run that lost).
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
                    const BoxMeshOptions& options) {
-  std::unordered_set<GridPoint, GridPointHash> wanted, held;
-  BoxMesh single = mesh_boxes_pass(tree, corners, domain, jobs, options, false, wanted, held);
-  if (wanted.empty()) return single;
+  PassNotes notes;
+  BoxMesh single = mesh_boxes_pass(tree, corners, domain, jobs, options, false, notes);
+  if (notes.wanted.empty() || single.mesh.tetrahedra.empty()) return single;
   const auto [single_worst, worst_tet] = worst_tet_shape(single);
-  if (single.mesh.tetrahedra.empty() || !job_touches(single, single.tet_job[worst_tet], held, wanted)) return single;
+  const std::int32_t worst_job = notes.unfrozen_worst_job >= 0 ? notes.unfrozen_worst_job : single.tet_job[worst_tet];
+  if (!job_touches(single, worst_job, notes.held, notes.wanted)) return single;
   single = BoxMesh{};
-  wanted.clear();
-  held.clear();
+  notes = PassNotes{};
   release_free_heap();
-  BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, true, wanted, held);
+  BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, true, notes);
   if (worst_tet_shape(two).first < single_worst) return two;
   two = BoxMesh{};
   release_free_heap();
-  return mesh_boxes_pass(tree, corners, domain, jobs, options, false, wanted, held);
+  return mesh_boxes_pass(tree, corners, domain, jobs, options, false, notes);
 }
 
 }  // namespace pqmesh::tet3d

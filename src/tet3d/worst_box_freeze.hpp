@@ -41,12 +41,17 @@ inline constexpr double kFlatWorst = 4096;
 // Rounds tried at most, each one table build and one partial trial.
 inline constexpr int kWorstBoxRounds = 3;
 
+struct WorstBoxFreeze {
+  std::int64_t rounds = 0;               // rounds kept
+  std::int32_t unfrozen_worst_job = -1;  // when rounds > 0: the worst job before the first round
+};
+
 // `done`: the trial of every job on `warps` (no inversions), or null when
 // the caller will remake it. On success `warps`, `frozen` and `done` are the
-// better table, its frozen set and its trial of every job, and the rounds
-// kept are returned; otherwise they are unchanged, except that `done` may be
-// null. `wanted` gets every trial's two_apex_points.
-std::int64_t freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
-                                std::unique_ptr<BoxAssembler>& done, GridPointSet& wanted);
+// better table, its frozen set and its trial of every job; otherwise `warps`
+// and `frozen` are unchanged and `done` is null when the pass ran (the
+// caller remakes the mesh of `warps`).
+WorstBoxFreeze freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
+                                  std::unique_ptr<BoxAssembler>& done);
 
 }  // namespace pqmesh::tet3d

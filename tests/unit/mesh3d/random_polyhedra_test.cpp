@@ -160,6 +160,7 @@ struct SeedRecord {
   double alpha = 0;            // radians (compute_alpha of the validated domain)
   double aspect = 0;           // max over the tetrahedra
   bool warp_fallback = false;  // TetMeshStats::warp_failure non-empty: the unwarped mesh was returned
+  std::int64_t worst_box_rounds = 0;  // TetMeshStats::worst_box_rounds (printed when not 0)
   double cpu_seconds = 0;
   double aspect_alpha() const { return aspect * alpha; }
 };
@@ -190,6 +191,7 @@ SeedRecord mesh_seed(std::uint64_t seed, const PolyhedronOptions& options) {
     const TetMeshResult m = tet_mesh(d);
     r.tets = static_cast<std::int64_t>(m.mesh.tetrahedra.size());
     r.warp_fallback = !m.stats.warp_failure.empty();
+    r.worst_box_rounds = m.stats.worst_box_rounds;
     const CheckReport c = check_mesh(m.mesh, d);
     if (c.valid()) {
       r.status = SeedRecord::Status::Valid;
@@ -220,10 +222,12 @@ SeedRecord mesh_seed(std::uint64_t seed, const PolyhedronOptions& options) {
 
 void print_record(const SeedRecord& r) {
   const double deg = r.alpha * 180 / std::numbers::pi;
+  const std::string rounds =
+      r.worst_box_rounds > 0 ? ", " + std::to_string(r.worst_box_rounds) + " worst-box rounds" : "";
   if (r.status == SeedRecord::Status::Valid)
-    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f%s, %.2f s cpu\n",
+    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f%s%s, %.2f s cpu\n",
                 static_cast<unsigned long long>(r.seed), static_cast<long long>(r.tets), deg, r.aspect,
-                r.aspect_alpha(), r.warp_fallback ? ", WARP FALLBACK" : "", r.cpu_seconds);
+                r.aspect_alpha(), r.warp_fallback ? ", WARP FALLBACK" : "", rounds.c_str(), r.cpu_seconds);
   else
     std::printf("seed %3llu: FAILED (%s), alpha %.2f deg, %.2f s cpu: %s\n", static_cast<unsigned long long>(r.seed),
                 r.failure.c_str(), deg, r.cpu_seconds, first_line(r.detail).c_str());
