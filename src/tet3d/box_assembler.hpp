@@ -8,6 +8,7 @@
 //   facet_box.cpp       facet boxes (§4.5.4) and their prisms
 //   facet_polygon.cpp   the polygon F ∩ b, its central points and its fan
 //   edge_box.cpp        edge boxes (§4.5.3), the apex on E, two cone points
+//   edge_box_fans.cpp   edge boxes with flat cones: F ∩ b, G ∩ b fanned
 //   vertex_box.cpp      united vertex boxes (§4.5.2)
 //   two_facet_box.cpp   two-facet boxes (§4.5.5)
 // The constructions are stated in facet_boxes.hpp and docs/ALGORITHM.md §12.
@@ -53,6 +54,8 @@ class BoxAssembler {
   // of every box that had a valid such construction.
   void allow_two_apex(bool on) { two_apex_ = on; }
   const std::vector<GridPoint>& two_apex_points() const { return two_apex_points_; }
+  // Edge boxes with flat cones may be made by edge_box_fans.cpp (on by default).
+  void allow_facet_fans(bool on) { facet_fans_ = on; }
   // The largest tet_shape over the tetrahedra made so far (+infinity for one
   // flat in floating point).
   double worst_shape() const;
@@ -99,7 +102,7 @@ class BoxAssembler {
   }
 
   // F ∩ b (facet_polygon.cpp).
-  Chords chords(std::int32_t leaf, const std::vector<Tri>& tris, const FacetPlane& plane) const;
+  Chords chords(std::int32_t leaf, const std::vector<Tri>& tris, const FacetPlane& plane, int edge = -1) const;
   Vec3 vertex_mean(const Chords& chord) const;
   Vec3 polygon_point(const Chords& chord, const FacetPlane& plane) const;
   std::vector<Vec3> central_points(const Chords& chord, const FacetPlane& plane) const;
@@ -113,7 +116,7 @@ class BoxAssembler {
 
   // Edge boxes (edge_box.cpp).
   // Edge boxes whose worst single-apex cone is flatter than this (tet_shape,
-  // about twice the aspect ratio) try flat_two_apex_box. A float threshold
+  // about twice the aspect ratio) try flat_edge_box. A float threshold
   // that only decides whether to look for another valid construction.
   static constexpr double kFlatCone = 4096;
   // The best two-point construction for far-set seed far0 (see two_apex_box):
@@ -124,7 +127,8 @@ class BoxAssembler {
     std::vector<char> far;
   };
   bool two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v);
-  bool flat_two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v, double single);
+  bool flat_edge_box(std::int32_t leaf, int edge, const std::vector<Tri>& tris, int v, double single);
+  TwoApex flat_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v);
   TwoApex best_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v, const std::vector<char>& far0);
   static std::vector<std::pair<int, int>> rim_of(const std::vector<Tri>& tris,
                                                  const std::map<std::pair<int, int>, std::size_t>& owner,
@@ -132,6 +136,21 @@ class BoxAssembler {
   void make_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v, const TwoApex& c);
   Vec3 apex_on_edge(const std::vector<Tri>& tris, Vec3 a, Vec3 b, const std::vector<int>& ends, Vec3 mid, double t0,
                     double t1);
+
+  // Edge boxes with F ∩ b and G ∩ b fanned from points of their facets
+  // (edge_box_fans.cpp): the best construction found (see best_facet_fans);
+  // shape +infinity when none is valid.
+  struct FacetFans {
+    double shape = std::numeric_limits<double>::infinity();
+    bool centred = false;  // true: coned from w, both polygons fanned; false: apex on[apex_facet]
+    int apex_facet = 0;    // index into E's facets (0: the cone's f(), 1: its g())
+    Vec3 on[2];            // the points of the two facets used (on their planes)
+    bool from_v[2] = {};   // centred: that facet's polygon fanned from v (the chords alone), not on[f]
+    GridPoint w{};         // centred: the interior grid point
+  };
+  Chords edge_polygon(const Chords& chord, int v) const;
+  FacetFans best_facet_fans(std::int32_t leaf, int edge, const std::vector<Tri>& tris, int v);
+  void make_facet_fans(std::int32_t leaf, int edge, const std::vector<Tri>& tris, int v, const FacetFans& c);
 
   // Vertex boxes (vertex_box.cpp).
   std::vector<Sign> vertex_box_hints(const std::vector<FaceSquare>& squares, const BoxFaces& faces);
@@ -152,6 +171,7 @@ class BoxAssembler {
   BoxJob job_box_;
   bool collect_ = false;
   bool two_apex_ = false;
+  bool facet_fans_ = true;
   std::vector<GridPoint> two_apex_points_;  // two_apex_points()
   std::vector<GridPoint> bad_;              // moved grid points of inverted tetrahedra (collect_ mode)
   std::vector<std::uint8_t> bad_axes_;      // parallel to bad_ (bad_axes())

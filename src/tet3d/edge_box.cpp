@@ -39,19 +39,37 @@ void BoxAssembler::edge_box(std::int32_t leaf, int edge) {
   const int v = book_.id(vk, [&] { return apex_on_edge(tris, a, b, ends, mid, t0, t1); });
   ++out_.stats.edge;
   // A non-positive cone (a warp pushed a face past E): two cone points or,
-  // failing that, the rebuild loop; flat cones: two cone points only when
-  // strictly better (two_apex_box, flat_two_apex_box).
+  // failing that, the rebuild loop; flat cones: another construction only
+  // when strictly better (two_apex_box, flat_edge_box).
   const double single = worst_cone(tris, book_.point(v));
   const bool positive = single < std::numeric_limits<double>::infinity();
   if (!positive && two_apex_box(leaf, tris, v)) {
     ++out_.stats.edge_two_apex;
     return;
   }
-  if (positive && single > kFlatCone && flat_two_apex_box(leaf, tris, v, single)) {
-    ++out_.stats.edge_two_apex_flat;
-    return;
-  }
+  if (positive && single > kFlatCone && flat_edge_box(leaf, edge, tris, v, single)) return;
   for (const Tri& t : tris) cone(leaf, t, v);
+}
+
+// An edge box whose apex v on E sees every face triangle, but some of its
+// cones are flat (worst tet_shape `single` above kFlatCone): the best of
+// two constructions of ours (docs/ALGORITHM.md §12.5), taken only if its
+// worst tet_shape is strictly better than `single`, the two-point
+// construction on ties. Both make only tetrahedra that are positive by
+// exact orient3d, so the rebuild loop never reacts to them; floats only
+// choose between valid constructions.
+bool BoxAssembler::flat_edge_box(std::int32_t leaf, int edge, const std::vector<Tri>& tris, int v, double single) {
+  const TwoApex two = flat_two_apex(leaf, tris, v);
+  const FacetFans fans = facet_fans_ ? best_facet_fans(leaf, edge, tris, v) : FacetFans{};
+  if (fans.shape < two.shape && fans.shape < single) {
+    make_facet_fans(leaf, edge, tris, v, fans);
+    ++out_.stats.edge_facet_fans;
+    return true;
+  }
+  if (!(two.shape < single)) return false;
+  make_two_apex(leaf, tris, v, two);
+  ++out_.stats.edge_two_apex_flat;
+  return true;
 }
 
 // An edge box whose apex v on E does not see every face triangle (exact
@@ -94,23 +112,18 @@ bool BoxAssembler::two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris,
   return true;
 }
 
-// An edge box whose apex v on E sees every face triangle, but some of its
-// cones are flat (worst tet_shape `single` above kFlatCone; our
-// construction, docs/ALGORITHM.md §12.5 "flat cones from two points"): E
-// runs within a few thousandths of h of a box face (or a face warped
-// towards it), so v, on E, lies almost in that face's plane (bounded seed
-// 167: apex 0.00015 h from the face triangle through E's own crossing;
-// seed 172: 0.00026 h from a face frozen on the grid). The same two-point
-// construction as two_apex_box, with the far set S' seeded by the k face
-// triangles with the worst cones from v (k = 1 .. all, ties in triangle
-// order) and grown until every rim tetrahedron is positive; among every
-// seed and every w, the best worst tet_shape over the box wins (the first
-// on ties), and it is taken only if strictly better than `single`. Every
-// tetrahedron is positive by exact orient3d (w sees S', v sees the rest
-// and every rim tetrahedron is checked), so the rebuild loop never reacts
-// to it; floats only choose between valid constructions. Not recorded in
-// two_apex_points() (that list decides mesh_boxes' second run).
-bool BoxAssembler::flat_two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris, int v, double single) {
+// Flat cones from v, first construction (docs/ALGORITHM.md §12.5 "flat
+// cones from two points"): E runs within a few thousandths of h of a box
+// face (or a face warped towards it), so v, on E, lies almost in that
+// face's plane (bounded seed 167: apex 0.00015 h from the face triangle
+// through E's own crossing; seed 172: 0.00026 h from a face frozen on the
+// grid). The same two-point construction as two_apex_box, with the far set
+// S' seeded by the k face triangles with the worst cones from v (k = 1 ..
+// all, ties in triangle order) and grown until every rim tetrahedron is
+// positive; among every seed and every w, the best worst tet_shape over
+// the box (the first on ties; +infinity when none is valid). Not recorded
+// in two_apex_points() (that list decides mesh_boxes' second run).
+BoxAssembler::TwoApex BoxAssembler::flat_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v) {
   const Vec3 V = book_.point(v);
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t n = 0; n < tris.size(); ++n)
@@ -120,12 +133,10 @@ bool BoxAssembler::flat_two_apex_box(std::int32_t leaf, const std::vector<Tri>& 
   std::vector<char> far0(tris.size(), 0);
   for (const auto& [shape, n] : order) {
     far0[n] = 1;
-    const TwoApex c = best_two_apex(leaf, tris, v, far0);
-    if (c.shape < best.shape) best = c;
+    TwoApex c = best_two_apex(leaf, tris, v, far0);
+    if (c.shape < best.shape) best = std::move(c);
   }
-  if (!(best.shape < single)) return false;
-  make_two_apex(leaf, tris, v, best);
-  return true;
+  return best;
 }
 
 BoxAssembler::TwoApex BoxAssembler::best_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v,

@@ -82,7 +82,7 @@ struct PassNotes {
 // two-cone-point edge boxes.
 BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                         std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex, PassNotes& notes) {
-  const BoxPass pass{tree, corners, domain, jobs, two_apex};
+  const BoxPass pass{tree, corners, domain, jobs, two_apex, options.facet_fans};
   WarpTable warps;
   std::int64_t rebuilds = 0, worst_box_rounds = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
@@ -212,6 +212,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   if (!done) {
     done = std::make_unique<BoxAssembler>(tree, corners, domain, options.warp ? &warps : nullptr);
     done->allow_two_apex(two_apex);
+    done->allow_facet_fans(options.facet_fans);
     run_jobs(*done, tree, jobs);
     notes.wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }

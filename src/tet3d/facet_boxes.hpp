@@ -86,7 +86,8 @@ struct FacetBoxStats {
   std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
   std::int64_t edge_apex_moved = 0;     // edge boxes whose apex is not E's midpoint (edge_box.cpp apex_on_edge)
   std::int64_t edge_two_apex = 0;       // edge boxes coned from v on E and a second point (edge_box.cpp two_apex_box)
-  std::int64_t edge_two_apex_flat = 0;  // the same, where v's cones were flat (edge_box.cpp flat_two_apex_box)
+  std::int64_t edge_two_apex_flat = 0;  // the same, where v's cones were flat (edge_box.cpp flat_two_apex)
+  std::int64_t edge_facet_fans = 0;     // edge boxes with flat cones from v made by edge_box_fans.cpp
   std::int64_t two_facet_centre = 0;    // two-facet boxes coned from their centre (the rest: from a facet)
   std::int64_t two_facet_reflex = 0;    // two-facet boxes at a reflex edge (all coned from their centre)
   // Two-facet boxes coned from the facet whose plane is farther from the
@@ -122,6 +123,11 @@ struct BoxMeshOptions {
   // is kept (the behaviour before stop 29, kept for the comparison in
   // worst_box_freeze_test.cpp).
   bool freeze_worst_box = true;
+  // Edge boxes with flat cones from the apex on E may fan F ∩ b and G ∩ b
+  // from points of their own facets (edge_box_fans.cpp); false: only the
+  // two-point construction is tried there (the behaviour before stop 30,
+  // kept for the comparison in flat_cone_two_apex_test.cpp).
+  bool facet_fans = true;
   // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
   // clearances of box vertices outside P, which are no mesh vertices).
   bool keep_warp_table = false;

@@ -14,14 +14,19 @@ namespace pqmesh::tet3d {
 // by (smaller id, larger id), each kept with the direction a -> b it has
 // in its face triangle. Every such edge lies on the face triangles' side
 // of one box face, so it is in exactly one of them (the part of a face
-// beyond F yields no triangles).
-BoxAssembler::Chords BoxAssembler::chords(std::int32_t leaf, const std::vector<Tri>& tris,
-                                          const FacetPlane& plane) const {
+// beyond F yields no triangles). In an edge box, `edge` is E (one of F's
+// edges): its crossings with the box faces are on F too.
+BoxAssembler::Chords BoxAssembler::chords(std::int32_t leaf, const std::vector<Tri>& tris, const FacetPlane& plane,
+                                          int edge) const {
+  auto on = [&](int id) {
+    const VertexKey& k = book_.key(id);
+    return on_facet(id, plane) || (edge >= 0 && k.kind == VertexKind::EdgeCrossing && k.facet == edge);
+  };
   Chords chord;
   for (const Tri& t : tris)
     for (int i = 0; i < 3; ++i) {
       const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-      if (!on_facet(a, plane) || !on_facet(b, plane)) continue;
+      if (!on(a) || !on(b)) continue;
       if (!chord.emplace(std::pair{std::min(a, b), std::max(a, b)}, std::pair{a, b}).second)
         throw InternalError("tet3d: edge on F in two face triangles of leaf " + std::to_string(leaf));
     }

@@ -31,6 +31,7 @@ std::unique_ptr<BoxAssembler> trial_assembler(const BoxPass& pass, const WarpTab
   auto a = std::make_unique<BoxAssembler>(pass.tree, pass.corners, pass.domain, &warps);
   a->collect_bad();
   a->allow_two_apex(pass.two_apex);
+  a->allow_facet_fans(pass.facet_fans);
   return a;
 }
 

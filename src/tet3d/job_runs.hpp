@@ -17,7 +17,8 @@ struct BoxPass {
   const CornerSet& corners;
   const Domain3& domain;
   std::span<const BoxJob> jobs;
-  bool two_apex = false;  // BoxAssembler::allow_two_apex
+  bool two_apex = false;   // BoxAssembler::allow_two_apex
+  bool facet_fans = true;  // BoxAssembler::allow_facet_fans
 };
 
 void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs);

@@ -27,6 +27,9 @@
 //                    moved onto facet `facet` (§4.5.5)
 //   TwoFacetCentre   the central point of F ∩ b (F = `facet`) of the two-facet
 //                    box with centre p (§4.5.5, the facet-box fan)
+//   EdgeFacetPoint   a central point of F ∩ b, F = `facet` one of E's two
+//                    facets, of the edge box with centre p whose cones from
+//                    the apex on E were flat (edge_box_fans.cpp; ours)
 //
 // Every key names the same point from both boxes sharing the square, so the
 // two sides build identical vertices.
@@ -51,7 +54,8 @@ enum class VertexKind : std::uint8_t {
   EdgeMidpoint,
   PVertex,
   TwoFacetApex,
-  TwoFacetCentre
+  TwoFacetCentre,
+  EdgeFacetPoint
 };
 
 struct VertexKey {
@@ -78,7 +82,7 @@ inline bool on_its_facet(const VertexKey& k) {
          k.kind == VertexKind::ChordProjection || k.kind == VertexKind::BoxOnFacet ||
          k.kind == VertexKind::FacetCentre || k.kind == VertexKind::BoxClip ||
          k.kind == VertexKind::CrossingProjection || k.kind == VertexKind::TwoFacetApex ||
-         k.kind == VertexKind::TwoFacetCentre;
+         k.kind == VertexKind::TwoFacetCentre || k.kind == VertexKind::EdgeFacetPoint;
 }
 
 struct VertexKeyHash {

@@ -45,10 +45,10 @@ namespace pqmesh {
 namespace {
 
 const char* vertex_kind_name(tet3d::VertexKind k) {
-  static constexpr const char* kNames[] = {"Grid",          "FacetCrossing", "ChordMidpoint", "ChordProjection",
-                                           "BoxOnFacet",    "FacetCentre",   "BoxClip",       "Warped",
-                                           "EdgeCrossing",  "CrossingProjection", "EdgeMidpoint", "PVertex",
-                                           "TwoFacetApex",  "TwoFacetCentre"};
+  static constexpr const char* kNames[] = {"Grid",         "FacetCrossing",      "ChordMidpoint", "ChordProjection",
+                                           "BoxOnFacet",   "FacetCentre",        "BoxClip",       "Warped",
+                                           "EdgeCrossing", "CrossingProjection", "EdgeMidpoint",  "PVertex",
+                                           "TwoFacetApex", "TwoFacetCentre",     "EdgeFacetPoint"};
   const auto i = static_cast<std::size_t>(k);
   return i < std::size(kNames) ? kNames[i] : "?";
 }
@@ -96,13 +96,14 @@ void probe(std::uint64_t seed, int show) {
   const tet3d::BoxMesh& m = run.mesh;
   const mesh3d::BoxPlan& plan = run.plan;
   const OctTree& tree = run.builder->tree();
-  std::printf("seed %llu: %zu tetrahedra; warped %lld, refused (conflicts) %lld, frozen (inverting) %lld in %lld "
-              "rebuilds, shortened %lld, first pass %lld, two-apex edge boxes %lld, flat-cone two-apex %lld\n",
-              static_cast<unsigned long long>(seed), m.mesh.tetrahedra.size(), static_cast<long long>(m.warped),
-              static_cast<long long>(m.warp_conflicts), static_cast<long long>(m.warp_inverting_left),
-              static_cast<long long>(m.warp_rebuilds), static_cast<long long>(m.warp_shortened),
-              static_cast<long long>(m.warp_first_pass), static_cast<long long>(m.stats.edge_two_apex),
-              static_cast<long long>(m.stats.edge_two_apex_flat));
+  std::printf(
+      "seed %llu: %zu tetrahedra; warped %lld, refused (conflicts) %lld, frozen (inverting) %lld in %lld "
+      "rebuilds, shortened %lld, first pass %lld, two-apex edge boxes %lld, flat-cone two-apex %lld, facet fans %lld\n",
+      static_cast<unsigned long long>(seed), m.mesh.tetrahedra.size(), static_cast<long long>(m.warped),
+      static_cast<long long>(m.warp_conflicts), static_cast<long long>(m.warp_inverting_left),
+      static_cast<long long>(m.warp_rebuilds), static_cast<long long>(m.warp_shortened),
+      static_cast<long long>(m.warp_first_pass), static_cast<long long>(m.stats.edge_two_apex),
+      static_cast<long long>(m.stats.edge_two_apex_flat), static_cast<long long>(m.stats.edge_facet_fans));
   std::vector<std::pair<double, std::size_t>> by_aspect;
   for (std::size_t t = 0; t < m.mesh.tetrahedra.size(); ++t) {
     const auto& T = m.mesh.tetrahedra[t];
