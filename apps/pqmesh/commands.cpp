@@ -36,7 +36,7 @@ const std::vector<Command>& commands() {
        "are merged (as TetGen does); coplanar facets with different markers stay apart, the edge\n"
        "between them is kept in the mesh and each boundary triangle has its facet's marker.\n"
        "Work in progress (issue 5): every box kind is meshed, warped and checked; the summary\n"
-       "prints the measured bound C / alpha (C = 20000, tested on the corpus, not yet a bound\n"
+       "prints the measured bound C / alpha (C = 5500, tested on the corpus, not yet a bound\n"
        "for every input: see the README's status table). A configuration the box code does\n"
        "not cover yet stops the run with exit 2, naming the leaf, 'not supported yet (issue 5)'.\n"
        "\n"

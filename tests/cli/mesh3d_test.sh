@@ -12,7 +12,7 @@ for m in cube l_block; do
   empty "$work/err" "mesh $m: stderr is not a terminal, so no progress and no message"
   for pat in "^input +.*$m.poly \(3D, [0-9]+ vertices" "^alpha +alpha = 90 deg" \
              "^mesh +[0-9]+ tetrahedra, [0-9]+ vertices, [0-9]+ boundary triangles" \
-             "^quality +max aspect ratio [0-9.]+ \(tetrahedron [0-9]+; measured bound C / alpha = [0-9.e+]+, C = 2e\+04\), dihedral min [0-9.]+ deg, max [0-9.]+ deg" \
+             "^quality +max aspect ratio [0-9.]+ \(tetrahedron [0-9]+; measured bound C / alpha = [0-9.e+]+, C = 5500\), dihedral min [0-9.]+ deg, max [0-9.]+ deg" \
              "^size +I3 = integral of 1/lfs\^3 over P = [0-9.e+]+ .*tetrahedra / I3 = [0-9.e+]+" \
              "^grid +aligned" "^leaves +[0-9]+: outside [0-9]+, empty [0-9]+, vertex [0-9]+, edge [0-9]+, facet [0-9]+" \
              "^boxes +[0-9]+ empty" "^time \(s\) +octree [0-9.]+, classify [0-9.]+, tetrahedra [0-9.]+, boundary [0-9.]+" \
