@@ -143,8 +143,8 @@ BoxAssembler::TwoApex BoxAssembler::best_two_apex(std::int32_t leaf, const std::
                                                   const std::vector<char>& far0) {
   const BoxKey<3>& key = tree_.key(leaf);
   TwoApex best;
-  const std::int64_t q = key.fine_side() / 4;
-  if (q * 4 != key.fine_side()) return best;
+  const std::vector<GridPoint> candidates = interior_grid_points(key, 4);
+  if (candidates.empty()) return best;
   const Vec3 V = book_.point(v);
   // Directed edge -> its face triangle (each directed edge is in one).
   std::map<std::pair<int, int>, std::size_t> owner;
@@ -172,26 +172,19 @@ BoxAssembler::TwoApex BoxAssembler::best_two_apex(std::int32_t leaf, const std::
     }
     return far;
   };
-  const GridPoint lo = key_corner(key, 0);
-  for (std::int64_t i = 1; i <= 3; ++i)
-    for (std::int64_t j = 1; j <= 3; ++j)
-      for (std::int64_t k = 1; k <= 3; ++k) {
-        GridPoint g = lo;
-        g.f[0] += i * q;
-        g.f[1] += j * q;
-        g.f[2] += k * q;
-        const Vec3 W = grid_coordinates(tree_, g);
-        std::vector<char> far = grow(W);
-        if (far.empty()) continue;
-        double s = 0;
-        for (std::size_t n = 0; n < tris.size(); ++n) {
-          const Vec3 x = book_.point(tris[n][0]), y = book_.point(tris[n][2]), z = book_.point(tris[n][1]);
-          s = std::max(s, tet_shape(x, y, z, far[n] ? W : V));
-        }
-        for (const auto& [x, y] : rim_of(tris, owner, far))
-          s = std::max(s, tet_shape(book_.point(x), W, book_.point(y), V));
-        if (s < best.shape) best = {s, g, std::move(far)};
-      }
+  for (const GridPoint& g : candidates) {
+    const Vec3 W = grid_coordinates(tree_, g);
+    std::vector<char> far = grow(W);
+    if (far.empty()) continue;
+    double s = 0;
+    for (std::size_t n = 0; n < tris.size(); ++n) {
+      const Vec3 x = book_.point(tris[n][0]), y = book_.point(tris[n][2]), z = book_.point(tris[n][1]);
+      s = std::max(s, tet_shape(x, y, z, far[n] ? W : V));
+    }
+    for (const auto& [x, y] : rim_of(tris, owner, far))
+      s = std::max(s, tet_shape(book_.point(x), W, book_.point(y), V));
+    if (s < best.shape) best = {s, g, std::move(far)};
+  }
   return best;
 }
 

@@ -92,38 +92,29 @@ BoxAssembler::FacetFans BoxAssembler::best_facet_fans(std::int32_t leaf, int edg
         best.on[i] = u;
       }
     }
-  // (B): w inside, each polygon fanned from its best central point.
-  const BoxKey<3>& key = tree_.key(leaf);
-  const std::int64_t q = key.fine_side() / 8;
-  if (points[0].empty() || points[1].empty() || q * 8 != key.fine_side()) return best;
-  const GridPoint lo = key_corner(key, 0);
-  for (std::int64_t i = 1; i <= 7; ++i)
-    for (std::int64_t j = 1; j <= 7; ++j)
-      for (std::int64_t k = 1; k <= 7; ++k) {
-        GridPoint g = lo;
-        g.f[0] += i * q;
-        g.f[1] += j * q;
-        g.f[2] += k * q;
-        const Vec3 W = grid_coordinates(tree_, g);
-        double s = worst_cone(tris, W);
-        FacetFans c{kInf, true, 0, {}, {true, true}, g};
-        for (int f = 0; f < 2 && s < best.shape; ++f) {
-          double fan_best = worst_fan(chord[f], V, W, true);
-          for (const Vec3& u : points[f]) {
-            const double t = worst_fan(closed[f], u, W, true);
-            if (t < fan_best) {
-              fan_best = t;
-              c.on[f] = u;
-              c.from_v[f] = false;
-            }
-          }
-          s = std::max(s, fan_best);
-        }
-        if (s < best.shape) {
-          c.shape = s;
-          best = c;
+  // (B): w inside, each polygon fanned from v or its best central point.
+  if (points[0].empty() || points[1].empty()) return best;
+  for (const GridPoint& g : interior_grid_points(tree_.key(leaf), 8)) {
+    const Vec3 W = grid_coordinates(tree_, g);
+    double s = worst_cone(tris, W);
+    FacetFans c{kInf, true, 0, {}, {true, true}, g};
+    for (int f = 0; f < 2 && s < best.shape; ++f) {
+      double fan_best = worst_fan(chord[f], V, W, true);
+      for (const Vec3& u : points[f]) {
+        const double t = worst_fan(closed[f], u, W, true);
+        if (t < fan_best) {
+          fan_best = t;
+          c.on[f] = u;
+          c.from_v[f] = false;
         }
       }
+      s = std::max(s, fan_best);
+    }
+    if (s < best.shape) {
+      c.shape = s;
+      best = c;
+    }
+  }
   return best;
 }
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "pqmesh/vec.hpp"
 #include "tree/tree.hpp"
@@ -58,6 +59,27 @@ inline GridPoint key_centre(const BoxKey<3>& key) {
   GridPoint p;
   for (int a = 0; a < 3; ++a) p.f[a] = key.fine_lo(a) + detail::fine_half(key.level);
   return p;
+}
+
+// The grid points inside the box of `key` at i/parts, j/parts, k/parts of
+// its side (i, j, k in 1 .. parts - 1; i outermost, k innermost): the
+// candidates for a second interior apex (edge_box.cpp, edge_box_fans.cpp).
+// Empty when the side is not a multiple of `parts` fine units.
+inline std::vector<GridPoint> interior_grid_points(const BoxKey<3>& key, std::int64_t parts) {
+  const std::int64_t q = key.fine_side() / parts;
+  if (q * parts != key.fine_side()) return {};
+  std::vector<GridPoint> out;
+  const GridPoint lo = key_corner(key, 0);
+  for (std::int64_t i = 1; i < parts; ++i)
+    for (std::int64_t j = 1; j < parts; ++j)
+      for (std::int64_t k = 1; k < parts; ++k) {
+        GridPoint g = lo;
+        g.f[0] += i * q;
+        g.f[1] += j * q;
+        g.f[2] += k * q;
+        out.push_back(g);
+      }
+  return out;
 }
 
 // Exact coordinates of a grid point of `tree` (Tree::key_plane of the coarsest
