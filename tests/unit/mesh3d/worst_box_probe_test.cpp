@@ -13,7 +13,9 @@
 // Run:  test_mesh3d --gtest_also_run_disabled_tests --gtest_filter='*WorstBoxProbe*'
 // Env:  PQMESH_PROBE_SEEDS="58,76,122,125" (default), PQMESH_PROBE_SHOW=3
 //       (tetrahedra printed per seed), PQMESH_PROBE_FAMILY=bounded (default),
-//       suite, every_run or harsh (the random family the seeds index);
+//       suite, every_run or harsh (the random family the seeds index), or
+//       flat (every-run seeds with every facet triangle its own facet,
+//       tests/support/flat_edge_domains.hpp);
 //       PQMESH_PROBE_FILE=data/3d/schoenhardt.poly probes that input file
 //       instead of the seeds (its "seed" is printed as 0).
 // The mesh is checked (check_mesh) like every mesh a test makes; the probe
@@ -37,6 +39,7 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quality.hpp"
 #include "pqmesh/read_domain.hpp"
+#include "support/flat_edge_domains.hpp"
 #include "support/random_domains.hpp"
 #include "tet3d/facet_boxes.hpp"
 #include "warped_box_mesh.hpp"
@@ -87,7 +90,10 @@ test::PolyhedronOptions probe_family() {
 
 Domain3 probe_domain(std::uint64_t seed) {
   const char* file = std::getenv("PQMESH_PROBE_FILE");
-  return make_domain(file != nullptr ? read_plc(file) : test::random_polyhedron(seed, probe_family()));
+  if (file != nullptr) return make_domain(read_plc(file));
+  const char* family = std::getenv("PQMESH_PROBE_FAMILY");
+  if (family != nullptr && std::string(family) == "flat") return test::every_run_seed_as_triangles(seed);
+  return make_domain(test::random_polyhedron(seed, probe_family()));
 }
 
 void probe(std::uint64_t seed, int show) {
