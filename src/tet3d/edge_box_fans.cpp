@@ -12,7 +12,8 @@
 //   (A) apex u on one facet F (a central point of F ∩ b), coned to every
 //       face triangle, and G ∩ b fanned from v (its chords coned to u);
 //   (B) an interior grid point w coned to every face triangle, and F ∩ b
-//       and G ∩ b each fanned from a central point of its own, coned to w.
+//       and G ∩ b each fanned from v or from a central point of its own,
+//       coned to w.
 // E ∩ b stays the two mesh edges from v to its ends in both: they are
 // sides of the fan polygons (edge_polygon). The tetrahedra are the cones of
 // a closed outward surface (the face triangles and the fans of F ∩ b and
@@ -66,9 +67,10 @@ BoxAssembler::Chords BoxAssembler::edge_polygon(const Chords& chord, int v) cons
 
 // The best of (A), on either facet, and (B), over their candidates: the
 // central points of each closed polygon (central_points) for u, the
-// interior grid points at i/4, j/4, k/4 of the box (i, j, k in 1..3, in that
-// order) for w, each fan point of (B) chosen for its own polygon. Ties go
-// to the first found: (A) on f(), (A) on g(), then (B).
+// interior grid points at i/8, j/8, k/8 of the box (interior_grid_points)
+// for w, each fan of (B) chosen for its own polygon (v first, then the
+// central points, strictly better only). (B) needs both polygons closed.
+// Ties go to the first found: (A) on f(), (A) on g(), then (B).
 BoxAssembler::FacetFans BoxAssembler::best_facet_fans(std::int32_t leaf, int edge, const std::vector<Tri>& tris,
                                                       int v) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
