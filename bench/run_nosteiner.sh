@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark of pqmesh mesh --no-boundary-steiner (thesis ch. 5, issue 6): the
+# Benchmark of pqmesh mesh --no-boundary-steiner (thesis ch. 5): the
 # data/2d corpus, a regular 1000-gon and a regular 10,000-gon (10,000 boundary
 # vertices). Per input: wall and CPU seconds of the whole process (read,
 # triangulate, internal verify, CDT baseline, check, write .vtu), peak MiB, the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Doubling series for the 2D quadtree mesher (issue 3: time and memory linear
-# in the output). Meshes the benchmark plate (bench/peers2d/poly2d.py plate:
+# Doubling series for the 2D quadtree mesher (time and memory should be
+# linear in the output). Meshes the benchmark plate (bench/peers2d/poly2d.py plate:
 # unit square with 5 circular holes) with --max-size halved at each step, so
 # the triangle count roughly quadruples; prints triangles, wall seconds, CPU
 # seconds (user + system: steadier than wall on a shared machine), peak MiB,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Doubling series for the 3D jobs: `pqmesh mesh` (issue 5 item 9, the
-# default) or `pqmesh octree` (issue 4 item 7, --octree) on one model with
+# Doubling series for the 3D jobs: `pqmesh mesh` (the default) or
+# `pqmesh octree` (--octree) on one model with
 # --max-size H_k = H0 / 2^k. Box sides are powers of two, so finer steps of H
 # change nothing between rows; each row multiplies the element count by 4 to
 # 8 (4 while boundary boxes dominate). Whole process: read, build, check,

@@ -1,9 +1,9 @@
-// pqmesh mesh on a 3D domain (issue 5): tet_mesh (pqmesh/tetmesh.hpp), check
+// pqmesh mesh on a 3D domain (thesis ch. 4): tet_mesh (pqmesh/tetmesh.hpp), check
 // the result against the domain, write it, print a one-screen summary. As for
 // 2D (cmd_mesh.cpp): nothing is written unless the mesh passed check_mesh, and
 // write_mesh is atomic, so a failure never leaves a partial output file.
-// Exit codes: 0 written; 2 invalid input, or a leaf kind the box tetrahedra do
-// not handle yet (MeshNotSupported, issue 5 open); 64 usage; 70 a mesh that
+// Exit codes: 0 written; 2 invalid input, or a leaf the box tetrahedra do
+// not handle (MeshNotSupported); 64 usage; 70 a mesh that
 // fails the check (a bug; nothing written).
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-// pqmesh mesh INPUT -o OUT --no-boundary-steiner (thesis ch. 5, issue 6):
+// pqmesh mesh INPUT -o OUT --no-boundary-steiner (thesis ch. 5):
 // triangulate a polygon with holes adding points only strictly inside it
 // (triangulate_without_boundary_steiner, include/pqmesh/nosteiner.hpp), check
 // the result with the no-boundary-Steiner check, write it, print a summary.

@@ -1,5 +1,5 @@
 #pragma once
-// The 3D tetrahedral mesher, end to end (issue 5; thesis ch. 4): a validated
+// The 3D tetrahedral mesher, end to end (thesis ch. 4): a validated
 // polyhedral domain in, a tetrahedral mesh out, with the input facet markers
 // on the boundary triangles and a region attribute per tetrahedron.
 //
@@ -10,10 +10,10 @@
 // triangles (faces of exactly one tetrahedron) with the marker of the input
 // facet each lies on.
 //
-// Partial (issue 5 is open): on the generic grid every leaf kind becomes
-// tetrahedra (tet3d/box_jobs.hpp), warped (§4.3); the aspect ratio bound of
-// Theorem 7 holds with the measured constant below, not a proved one. A configuration the box code
-// does not cover (box_jobs' problems, e.g. a second component inside a united
+// On the generic grid every leaf kind becomes tetrahedra (tet3d/box_jobs.hpp),
+// warped (§4.3); the aspect ratio bound of Theorem 7 holds with the measured
+// constant below, not a proved one. A configuration the box code does not
+// cover (box_jobs' problems, e.g. a second component inside a united
 // vertex box) stops the run with MeshNotSupported naming the leaf; nothing is
 // returned, never a partial mesh. On the aligned grid (generic_grid = false)
 // only empty and facet boxes are meshed: a domain whose facets all lie on box
@@ -37,8 +37,8 @@ namespace pqmesh {
 // there). A measured ceiling, not a proved constant (the thesis's C is not
 // numeric): the maximum measured over the corpus, the every-run, suite and
 // bounded random families (seeds 0..199 each), the flat-edge family (seeds
-// 12..199) and the harsh family's seeds 0..19 (two of them re-run in stop
-// 30) is 4,568 (bounded seed 193, stop 30), so C keeps 20% above it
+// 12..199) and the harsh family's seeds 0..19 is 4,568 (bounded seed 193),
+// so C keeps 20% above it
 // (docs/ALGORITHM.md §13). The summary of `pqmesh mesh` prints C / alpha
 // next to the achieved aspect ratio.
 inline constexpr double kMeasuredAspectAlphaC = 5500;
@@ -113,7 +113,7 @@ struct TetMeshResult {
   TetMeshStats stats;
 };
 
-// A leaf the box tetrahedra do not handle yet (issue 5 open). An InvalidInput
+// A leaf the box tetrahedra do not handle. An InvalidInput
 // of code Unsupported ("a valid input using a feature we do not handle"):
 // ids() = {leaf node id}; the message names the leaf, its kind and its box.
 class MeshNotSupported : public InvalidInput {

@@ -16,8 +16,8 @@
 //
 // The checker's boundary-face stage (check3d_facets.cpp) and the facet
 // markers of mesh3d/boundary_faces.cpp use it: on slanted facets most of
-// these orient3d calls reach the exact stages, and they were the checker's
-// largest cost on the random polyhedra (issue 5).
+// these orient3d calls reach the exact stages, and on the random polyhedra
+// they would otherwise be the checker's largest cost.
 #include <array>
 #include <cmath>
 #include <limits>

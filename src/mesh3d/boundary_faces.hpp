@@ -1,6 +1,6 @@
 #pragma once
-// The boundary triangles of a box mesh and the input facet each lies on
-// (issue 5 item 3: "input facet markers carried to boundary triangles").
+// The boundary triangles of a box mesh and the input facet each lies on, so
+// that the input facet markers are carried to the boundary triangles.
 //
 // Boundary triangles are the faces of exactly one tetrahedron, written as the
 // outward face of that tetrahedron (right-hand normal out of the mesh,

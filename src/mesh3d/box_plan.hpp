@@ -1,6 +1,7 @@
 #pragma once
-// One box job per octree leaf (thesis §4.5), for the box kinds src/tet3d
-// meshes today: empty boxes (§4.5.1) and facet boxes (§4.5.4).
+// One box job per octree leaf (thesis §4.5). plan_boxes (the aligned grid):
+// empty boxes (§4.5.1) and facet boxes (§4.5.4) only; plan_all_kinds (the
+// generic grid): every kind.
 //
 // Rules, per leaf in id order (deterministic):
 //   no component (the cube misses P)           -> skipped;
@@ -42,7 +43,7 @@ struct BoxPlan {
 };
 
 // Throws MeshNotSupported (pqmesh/tetmesh.hpp) at the first leaf (in id
-// order) of a kind not handled yet.
+// order) of a kind other than empty or facet box.
 BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder);
 
 // Every kind (tet3d/box_jobs.hpp: empty, facet, edge, united vertex boxes,

@@ -244,7 +244,7 @@ int common_apex(const Domain3& dom, const Cube& c, const std::vector<int>& tris)
   return common.empty() ? -1 : common[0];
 }
 
-// The star-shaped rule (issue 4 item 7): the facets meeting C_e form one
+// The star-shaped rule (the fast path of components()): the facets meeting C_e form one
 // cone whose apex meets C, so P ∩ C is connected:
 //   * a vertex v in C common to every facet meeting C (a vertex cone; P ∩ C
 //     is star-shaped from v);

@@ -30,8 +30,7 @@
 // regions of ∂C ∩ P joined to the sheets by walking axis-parallel lines on
 // ∂C (the 12 cube edges and probe lines through every point where a triangle
 // side crosses a cube face); internal floaters joined by the tether of
-// §4.1.6 (a ray in +x from the shell's largest vertex). Fast path (issue 4
-// item 7): when the facets meeting C form one cone whose apex meets C (they
+// §4.1.6 (a ray in +x from the shell's largest vertex). Fast path: when the facets meeting C form one cone whose apex meets C (they
 // share a vertex v lying in C; or they are the two facets of the one P edge
 // meeting C; or there is one facet and no edge), P ∩ C is connected
 // (cube_components.cpp, single_cone).
@@ -83,9 +82,9 @@ std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube);
 std::vector<int> triangles_meeting(const Domain3& domain, const Cube& cube, std::span<const int> candidates,
                                    std::span<const int> known = {});
 
-// What a caller that already knows the neighbourhood of C hands down (issue 4
-// item 7: candidate lists passed down the tree, ex(child) ⊂ ex(parent)), so
-// that no step looks at every facet triangle.
+// What a caller that already knows the neighbourhood of C hands down
+// (candidate lists passed down the tree, valid since ex(child) ⊂
+// ex(parent)), so that no step looks at every facet triangle.
 struct CubeHint {
   std::span<const int> candidates;  // every facet triangle meeting C_e is among them
   bool candidates_exact = false;    // they are exactly those triangles, sorted

@@ -4,7 +4,7 @@
 // boxes are adjacent to a given duplicate box"), and adjacency between the
 // duplicates of two face-neighbouring boxes (thesis §4.1.1 "Adjacent").
 //
-// Rule (issue 4 item 1). Two duplicates k of b and k' of b', b's face
+// Rule. Two duplicates k of b and k' of b', b's face
 // containing (or equal to) the face F of b' on their common plane, are
 // adjacent iff their components share a region of POSITIVE AREA of F: a
 // point q of F, off every trace of ∂P on F, lying in P ∩ C_b component k and

@@ -1,9 +1,9 @@
 #pragma once
 // The kind of an octree leaf at the end of the octree (thesis §4.1.7: "every
 // leaf box is either empty, lying entirely inside P, or contains a vertex,
-// edge, or facet cone"; issue 4 item 3 adds the fifth kind the facet phase
-// leaves next to protected edge boxes: two facets of an edge whose edge is
-// outside the box).
+// edge, or facet cone"; a fifth kind is the one the facet phase leaves next
+// to protected edge boxes: two facets of an edge whose edge is outside the
+// box).
 //
 // Decided exactly, from the P faces incident on the leaf's component P ∧ b
 // (NodeData3 / ComponentFaces3: integer ids, themselves exact) and the

@@ -82,10 +82,9 @@ struct OctreeOptions {
   SizeField3 size_field;  // empty: none
   // The once-only separating splits of §4.1.7 steps 6 and 9 (every edge /
   // facet box and its balance-adjacent boxes split once before protection).
-  // With them every leaf is one of the thesis's kinds (without them random
-  // polyhedron seed 7 left a protected box holding three facets of a vertex
-  // outside it, until the edge rule's neighbour test of stop 24 split it
-  // away); they cost about 10x the leaves (ALGORITHM.md §10). Off only
+  // With them every leaf is one of the thesis's kinds (without them a
+  // protected box may hold three facets of a vertex outside it); they cost
+  // about 10x the leaves (ALGORITHM.md §10). Off only
   // for callers that study other stages on smaller trees (the tet3d tests).
   bool separate = true;
   // Generic grid (tree/root_cube.hpp choose_generic_root_cube; ALGORITHM.md
@@ -105,7 +104,7 @@ struct NodeData3 {
   int vertex_owner = -1;                     // v if this leaf lies in v's united box (§4.1.3)
   // Corner 0 of the shifted cube / of the shifted ex(b) lies in P
   // (cube_components.hpp): with cube_tris / ex_tris, all that components()
-  // needs, so no call looks at every facet triangle (issue 4 item 7).
+  // needs, so no call looks at every facet triangle.
   bool cube_corner0_in = false, ex_corner0_in = false;
 };
 

@@ -55,7 +55,7 @@ class CornerSet {
 
  private:
   void add(const GridPoint& p, std::int32_t level);
-  // Open addressing (first_use_index.hpp, issue 5 item 9): lookups only, the
+  // Open addressing (first_use_index.hpp): lookups only, the
   // set is never iterated, so its layout cannot reach the output.
   FirstUseIndex<GridPoint, GridPointHash> index_;
   std::vector<std::int32_t> levels_;  // by id: the deepest level with that corner

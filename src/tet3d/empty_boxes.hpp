@@ -1,6 +1,6 @@
 #pragma once
-// Tetrahedra of empty boxes (thesis §4.5.1) and their assembly into one mesh
-// (issue 5 item 3), the first stage of the 3D mesher.
+// Tetrahedra of empty boxes (thesis §4.5.1) and their assembly into one mesh,
+// the first stage of the 3D mesher.
 //
 // An empty box is a leaf whose closed cube lies in P with no P face crossing
 // its interior. Each is cut into tetrahedra by joining its centre (the

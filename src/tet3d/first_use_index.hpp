@@ -1,7 +1,8 @@
 #pragma once
 // A set of keys numbered in order of first insertion (ids 0, 1, 2, ...), with
 // lookup by key: the index behind PointBook (point_book.hpp) and CornerSet
-// (box_faces.hpp), issue 5 items 8 and 9.
+// (box_faces.hpp). Ids follow insertion order, never the hash, so the
+// output does not depend on the layout.
 //
 // Layout: open addressing with linear probing. A slot holds an id and 32 bits
 // of the key's hash; the key itself lives in keys_ (by id) and is read only

@@ -7,7 +7,7 @@
 // faces and centres of boxes are all such points (for boxes of level <= 49; the
 // tree never comes close). Two vertices are the same vertex exactly when their
 // GridPoints are equal: identification is by integer key, never by comparing
-// rounded coordinates (issue 5 item 3). Coordinates are computed from the key
+// rounded coordinates. Coordinates are computed from the key
 // through Tree::key_plane, so they are exact doubles (root_cube.hpp).
 #include <array>
 #include <cstddef>

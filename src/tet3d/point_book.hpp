@@ -95,8 +95,8 @@ class PointBook {
   std::array<RecentGrid, kRecentSlots> recent_{};
 
   const WarpTable* warps_ = nullptr;
-  // Open addressing, ids in order of first use (first_use_index.hpp, issue 5
-  // item 8): the layout never changes the output.
+  // Open addressing, ids in order of first use (first_use_index.hpp): the
+  // layout never changes the output.
   FirstUseIndex<VertexKey, VertexKeyHash> index_;
   std::vector<Vec3> points_;  // by id
 };

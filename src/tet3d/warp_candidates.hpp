@@ -4,13 +4,12 @@
 // along those rings, the deepest level of those boxes and the whole box edges
 // through it; then every square centre with its square's four corners.
 //
-// Layout (issue 5 item 9): one flat list, not one object with three heap
-// vectors per point. Points, levels and three compressed rows (facets,
-// neighbours as candidate ids, box edges) in arrays indexed by candidate id.
-// Every row lists its entries without repeats in the order of their first
-// use, as the old per-point vectors filled with std::find did (the warp's
-// sums depend on that order). While building, neighbours and box edges sit
-// in fixed inline rows (RowBuilder; a point is used ~18 times on plate_holes,
+// Layout: one flat list, not one object with three heap vectors per point
+// (the candidates are a large part of the peak memory). Points, levels and
+// three compressed rows (facets, neighbours as candidate ids, box edges) in
+// arrays indexed by candidate id. Every row lists its entries without
+// repeats in the order of their first use (the warp's sums depend on that
+// order). While building, neighbours and box edges sit in fixed inline rows (RowBuilder; a point is used ~18 times on plate_holes,
 // so a per-use log would be large), facets in a per-use log (most jobs have
 // none) grouped by a stable counting sort.
 //

@@ -1,6 +1,6 @@
 #pragma once
-// Case B of §4.4 after the first warping pass (gap filled; docs/ALGORITHM.md
-// §12.5). The thesis puts the I vertex of a P edge E and a box face square S
+// Case B of §4.4 after the first warping pass (beyond the thesis;
+// docs/ALGORITHM.md §12.5). The thesis puts the I vertex of a P edge E and a box face square S
 // on the PREWARPED square. Where E passes within h/8 of a box edge e of two
 // faces S1, S2 of one box (E clipping the box near e), its two crossings
 // x1 (on S1) and x2 (on S2) are both close to e and to each other, whatever

@@ -160,7 +160,7 @@ expect 2 "mesh with a missing size field" -- "$pqmesh" mesh "$data/2d/square.pol
   --size-field "$work/no_such_field.txt"
 if [[ -z $(ls "$work" | grep -E '^never') ]]; then ok; else fail "refused mesh runs left files: $(ls "$work" | grep -E '^never')"; fi
 
-# pqmesh octree (issue 4): leaf boxes as VTK hexahedra.
+# pqmesh octree: leaf boxes as VTK hexahedra.
 expect 0 "octree cube" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes.vtu"
 contains "$work/cube_boxes.vtu" "UnstructuredGrid" "octree writes a .vtu"
 contains "$work/cube_boxes.vtu" "Name=\"level\"" "octree .vtu has the level field"
@@ -171,7 +171,7 @@ if /usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); sys.ex
 expect 2 "octree of a 2D input" -- "$pqmesh" octree "$data/2d/square.poly" -o "$work/never_octree.vtu"
 expect 64 "octree without -o" -- "$pqmesh" octree "$data/3d/cube.poly"
 if [[ ! -e $work/never_octree.vtu ]]; then ok; else fail "refused octree run left a file"; fi
-# Size control (issue 4 item 5): --max-size and a 3D size field (x y z size).
+# Size control (thesis §1.1): --max-size and a 3D size field (x y z size).
 expect 0 "octree cube --max-size" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/cube_boxes_h.vtu" --max-size 0.125
 contains "$work/out" "^splits     size [1-9]" "octree --max-size splits in the size phase"
 contains "$work/out" "^phases" "octree summary has the per-phase line"

@@ -1,4 +1,4 @@
-// Invariants of the 3D octree (issue 4 item 3; thesis §4.1.7, §4.2) over the
+// Invariants of the 3D octree (thesis §4.1.7, §4.2) over the
 // fast corpus models and seeded random polyhedra (tests/support/random_domains:
 // right prisms and frustums over random polygons with holes, spikes and box or
 // prism cavities; options scaled down below):
@@ -118,12 +118,10 @@ TEST(OctreeInvariantsRandom, LeafKindsLemma1BalanceTheorem5) {
               totals().worst_where.c_str(), octest::kTheorem5Bound);
 }
 
-// Harsh seed 9 (random_domains.hpp, harsh_polyhedron_options) left a leaf of
-// kind Other in stops 22-23: balance-adjacent to an edge box of one edge of a
-// trihedral vertex cone, protected with it, and crossed by the cone's third
-// facet just outside the vertex's united box (ALGORITHM.md §10,
-// OctreeBuilder::neighbour_would_be_of_no_kind). On the generic grid, as
-// `pqmesh mesh` builds it (on the aligned grid that leaf does not arise).
+// Harsh seed 9 (random_domains.hpp, harsh_polyhedron_options) on the generic
+// grid, as `pqmesh mesh` builds it: the leaves balance-adjacent to an edge
+// box of a trihedral vertex cone all have a kind, none Other
+// (OctreeBuilder::neighbour_would_be_of_no_kind, ALGORITHM.md §10).
 TEST(OctreeInvariantsRandom, HarshSeed9EdgeBoxNeighboursHaveAKind) {
   const std::uint64_t seed = 9;
   const test::PolyhedronOptions options = test::harsh_polyhedron_options();
@@ -133,10 +131,9 @@ TEST(OctreeInvariantsRandom, HarshSeed9EdgeBoxNeighboursHaveAKind) {
   check_octree(make_domain(test::random_polyhedron(seed, options)), "harsh seed 9", std::move(generic));
 }
 
-// Seed 7 without the separating splits (OctreeOptions::separate) kept a
-// protected leaf holding three facets of a vertex outside it until stop 24
-// ("leaf 3882 (level 7; vertices none; edges none; facets 2, 3, 4): kind
-// other"), the case of harsh seed 9 above: the edge rule now splits it away.
+// Seed 7 without the separating splits (OctreeOptions::separate): every leaf
+// has a kind; the edge rule splits away a protected leaf that would hold
+// three facets of a vertex outside it (the case of harsh seed 9 above).
 TEST(OctreeInvariantsRandom, Seed7WithoutSeparatingSplitsHasEveryLeafOfAKind) {
   OctreeOptions unseparated;
   unseparated.separate = false;

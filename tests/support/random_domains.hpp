@@ -140,8 +140,8 @@ PolyhedronOptions bounded_feature_polyhedron_options();
 PolyhedronOptions suite_polyhedron_options();
 
 // Options of the "every-run" family: the one the default test suite meshes
-// for ALL seeds 0..199 on every run (tests/unit/mesh3d/random_polyhedra_test.cpp,
-// issue 5 item 4), so the 200 must cost about 100 cpu s in Release together,
+// for ALL seeds 0..199 on every run (tests/unit/mesh3d/random_polyhedra_test.cpp),
+// so the 200 must cost about 100 cpu s in Release together,
 // about half a second (a cube's worth of tetrahedra) per seed. The suite
 // family above is valid on all 200 seeds but 6.5x too slow. tet_mesh's cost
 // grows with the volume over which the local feature size is small, and
@@ -159,7 +159,7 @@ PolyhedronOptions suite_polyhedron_options();
 //    average, a plain one 0.4 s);
 //  - cavities (1-2, box or prism) with probability 1/2, half-width 0.1-0.15;
 //  - height 0.75-1 (less volume at the same lfs), no thin slabs.
-// It keeps every feature issue 5 names: nonconvex outlines with notches,
+// It keeps every feature of the random families: nonconvex outlines with notches,
 // 20-30 degree spikes, through-holes, box and prism cavities, frustums (top
 // scale 3/4, 7/8 or 5/4), random scale 2^-3..2^3 and dyadic offset (the
 // test counts them over the 200 seeds).

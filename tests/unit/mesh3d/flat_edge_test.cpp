@@ -123,8 +123,8 @@ TEST(FlatEdges, LPrismWithASplitSideAtItsReflexEdge) {
 
 TEST(FlatEdges, SquaresSplitByPlaneGroupsAtAVertex) {
   // Every-run seed 137 as triangles: squares of the united box of vertex 4
-  // meet a flat edge's two facets and a third facet across a reflex crease
-  // (an InternalError before plane_group_pieces, stop 26).
+  // meet a flat edge's two facets and a third facet across a reflex crease,
+  // so plane_group_pieces splits them.
   EXPECT_GT(mesh_every_run_seed_as_triangles(137).split_squares, 0);
 }
 
@@ -145,11 +145,8 @@ INSTANTIATE_TEST_SUITE_P(Shards, FlatEdgesRandom, ::testing::Range(0, kRandomSha
 
 // The same construction on every-run seeds 12..199: a disabled measurement
 // family (--gtest_also_run_disabled_tests), 47 shards of 4 seeds, about 13
-// minutes of cpu. It passes since stop 29 (docs/ALGORITHM.md §12.4 "Flat
-// edges"): every seed is valid with its markers in place and warped, and
-// within kAspectAlphaC (max 1,469.6, seed 115); seeds 100 and 49 were above
-// it (67,513 and 21,621) until the worst-box freeze (§12.5), which keeps a
-// round on 7 of the 188 seeds.
+// minutes of cpu (docs/ALGORITHM.md §12.4 "Flat edges"). Checked: every seed
+// is valid with its markers in place, warped, and within kAspectAlphaC.
 constexpr int kFamilyFirstSeed = kRandomShards * kRandomSeedsPerShard;
 constexpr int kFamilySeedsPerShard = 4;
 constexpr int kFamilyShards = (200 - kFamilyFirstSeed) / kFamilySeedsPerShard;

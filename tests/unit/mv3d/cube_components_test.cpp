@@ -109,7 +109,7 @@ TEST(CubeComponents, RimInsideOneFaceIsJoinedThroughTheFace) {
   EXPECT_EQ(r.components[0].vertices, std::vector<int>({9, 10, 13, 14}));
 }
 
-// Issue 4 item 7: the octree calls components() with the candidate triangles
+// The octree calls components() with the candidate triangles
 // of an enclosing box and corner 0's status walked from that box's corner 0
 // (CubeHint), instead of scanning all T triangles and walking from -infinity.
 // Both must give the same answer on every cube: compared here on the 8

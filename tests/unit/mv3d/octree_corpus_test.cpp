@@ -167,7 +167,7 @@ std::string param_name(const ::testing::TestParamInfo<const char*>& param) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, OctreeCorpus, ::testing::ValuesIn(octest::kFastCorpus), param_name);
-// With candidate lists handed down the tree (issue 4 item 7) the larger corpus
+// With candidate lists handed down the tree the larger corpus
 // models build in a few CPU seconds. The separating splits of §4.1.7 steps 6
 // and 9 multiply the leaves by about 10 (pqmesh octree, Release, 2026-11-30:
 // cube_through_hole 92,415 leaves 2.9 CPU s, plate_holes 128,962 / 4.9 s,

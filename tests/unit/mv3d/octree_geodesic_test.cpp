@@ -1,6 +1,6 @@
 // The octree refines by geodesic, not Euclidean, proximity (thesis §4.1.1:
 // crowding and balance look at the component P ∧ ex(b), not at everything in
-// ex(b)); issue 4 item 4. Two models, each built for a gap width w = 1e-1 and
+// ex(b)). Two models, each built for a gap width w = 1e-1 and
 // w = 1e-3 (relative to part size 1; w is rounded to a multiple of 2^-12 so
 // that every coordinate is dyadic and the w = 1e-1 models equal
 // data/3d/tuning_fork.poly and data/3d/heat_sink.poly of generate_corpus.py):

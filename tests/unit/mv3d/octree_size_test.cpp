@@ -1,4 +1,4 @@
-// Size control of the octree (thesis §1.1, issue 4 item 5): OctreeOptions'
+// Size control of the octree (thesis §1.1): OctreeOptions'
 // max_size and size field. The expected bounds come from the definition of
 // the size function, f(x) = min(max_size, min_i s_i + |x - p_i|), evaluated
 // here independently of the builder.

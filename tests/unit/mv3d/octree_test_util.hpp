@@ -49,7 +49,7 @@ inline Plc3 extrude(const std::vector<Vec2>& poly, double depth) {
   return plc;
 }
 
-// The tuning fork of the geodesic tests (issue 4 item 4, issue 5 item 6): the
+// The tuning fork of the geodesic tests (octree and tet mesh): the
 // plate [0,1]^2 x [0,1/4] minus the square cavity [1/4,3/4]^2 and a neck of
 // width w (rounded to a multiple of 2^-12, so every coordinate is dyadic)
 // that opens the cavity to the outside. w = 1e-1 is data/3d/tuning_fork.poly.
@@ -141,7 +141,7 @@ inline int expect_balance(const OctreeBuilder& b, const std::string& label) {
   return checked;
 }
 
-// §4.1.7 / issue 4 item 3: every leaf meeting P is empty inside P, a vertex,
+// §4.1.7: every leaf meeting P is empty inside P, a vertex,
 // edge or facet cone, or two facets of an edge lying outside it (never Other).
 // Returns the number of leaves of each kind (indexed by LeafKind).
 inline std::array<std::int64_t, kLeafKinds> expect_leaf_kinds(const OctreeBuilder& b, const std::string& label) {

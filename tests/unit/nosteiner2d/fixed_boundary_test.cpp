@@ -1,4 +1,4 @@
-// Fixed-boundary mode for local remeshing (issue 6 item 5; thesis §1.2): cut
+// Fixed-boundary mode for local remeshing (thesis §1.2): cut
 // the triangles of a disk out of a quad_mesh mesh, take the cut boundary as a
 // polygon (its subdivision kept exactly: many consecutive sides are collinear,
 // i.e. straight angles, which make_domain accepts), triangulate it without

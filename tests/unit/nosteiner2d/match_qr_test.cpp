@@ -412,7 +412,7 @@ Domain2 polygon(const std::vector<Vec2>& pts) {
   return make_domain(std::move(p));
 }
 
-// Hard cases of issue 6: a regular 128-gon (many near-straight Case 2
+// Hard cases: a regular 128-gon (many near-straight Case 2
 // corners), a reflex vertex 1/100 of the edge above its middle, the
 // four-point thin trapezoid whose long edge faces a close vertex (Fig. 1.1).
 TEST(MatchQR, HardCases) {

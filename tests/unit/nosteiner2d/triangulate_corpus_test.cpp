@@ -1,5 +1,5 @@
 // The no-boundary-Steiner triangulation (thesis ch. 5 assembled) on data/2d
-// and on the hard cases of issue 6 item 3. Every output passes check_mesh with
+// and on hand-made hard cases. Every output passes check_mesh with
 // the no-boundary-Steiner check (nosteiner_run.hpp); the measured constant k
 // (achieved >= k g(P)) is asserted in triangulate_random_test.cpp over this
 // corpus and the random polygons, and its floor is also asserted here.
@@ -104,7 +104,7 @@ TEST(NoSteinerTriangulation, CorpusDefaultOptions) {
   test::print(st, "data/2d, default options");
 }
 
-// Issue 6 item 3's hard cases (dyadic coordinates unless said otherwise).
+// Hard cases (dyadic coordinates unless said otherwise).
 void hard_cases(const NoSteinerOptions& options, double k, const char* label) {
   auto run = [&](const Domain2& d, const std::string& what, test::RunStats& st) {
     pqmesh::run(d, what, st, options, k);

@@ -36,7 +36,7 @@ void run_seeds(std::uint64_t first, std::uint64_t last) {
   test::print(st, ("random polygons, seeds " + std::to_string(first) + "-" + std::to_string(last)).c_str());
 }
 
-// All 300 run in the suite (issue 6 item 3), in three shards so that ctest
+// All 300 run in the suite, in three shards so that ctest
 // runs them in parallel: ~10 s CPU each in Release (R's quadtree mesh, ~50k
 // triangles per polygon, is ~80% of it). They cover every feature of
 // describe_polygon (0 to 4 holes, 0 to 2 spikes, 0 to 3 near-touching holes,

@@ -1,5 +1,5 @@
 // FirstUseIndex (tet3d/first_use_index.hpp): ids in order of first insertion,
-// whatever the hash and the table growth, and exact lookups (issue 5 items 8, 9).
+// whatever the hash and the table growth, and exact lookups.
 #include "tet3d/first_use_index.hpp"
 
 #include <gtest/gtest.h>
