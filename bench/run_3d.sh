@@ -36,11 +36,12 @@
 # binary file converted to ASCII first, outside the timing); valid = `pqmesh
 # check` of the output against the input domain: the exact checker, which
 # accepts a boundary vertex off a slanted facet only when it is a faithful
-# rounding (within an ulp, docs/ALGORITHM.md §5). gmsh's vertices inside
-# facets are often a few ulps off the facet plane, and gmsh HXT (2 threads,
-# Debian 12's gmsh) varies from run to run and often writes two vertices with
-# the same coordinates; those meshes show NO (pqmesh quality then also exits
-# non-zero and says so on stderr, the table keeps its figures as n/a).
+# rounding (within an ulp, docs/algorithm/quality.md "The validity checker").
+# gmsh's vertices inside facets are often a few ulps off the facet plane, and
+# gmsh HXT (2 threads, Debian 12's gmsh) varies from run to run and often writes
+# two vertices with the same coordinates; those meshes show NO (pqmesh quality
+# then also exits non-zero and says so on stderr, the table keeps its figures as
+# n/a).
 #
 # Environment: PQMESH_BIN (default build/bin/pqmesh, relative to the repo root).
 set -uo pipefail

@@ -22,6 +22,7 @@ import math
 import os
 import shutil
 import struct
+import zlib
 from fractions import Fraction as F
 
 ROOT = os.path.dirname(os.path.abspath(__file__))
@@ -1047,6 +1048,55 @@ def gen_bad():
         "segment refers to vertex 5 of 4")
 
 
+# Damaged compressed .vtu meshes (read by pqmesh's mesh readers, not as domains): one
+# tetrahedron, header_type UInt64, vtkZLibDataCompressor, appended raw arrays in document order.
+# A compressed array is [blocks, block size, last block size, compressed sizes...] (UInt64 each)
+# followed by the zlib streams (src/io/vtu_compression.hpp). The error line is the line of the
+# damaged array's DataArray tag: Points on line 6, connectivity 9, offsets 10, types 11.
+VTU_LINES = {"Points": 6, "connectivity": 9, "offsets": 10, "types": 11}
+
+
+def zlib_array(data, damage=None):
+    stream = bytearray(zlib.compress(data, 6))
+    header = [1, max(len(data), 1), len(data), len(stream)]
+    if damage == "blocks":
+        header[0] = 1 << 40
+    if damage == "stream":
+        stream[0:4] = b"\xff\xff\xff\xff"
+    return struct.pack("<4Q", *header) + bytes(stream)
+
+
+def tetrahedron_vtu(damaged, damage):
+    arrays = [("Points", "Float64", struct.pack("<12d", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)),
+              ("connectivity", "Int32", struct.pack("<4i", 0, 1, 2, 3)),
+              ("offsets", "Int32", struct.pack("<i", 4)), ("types", "UInt8", bytes([10]))]
+    blobs = [zlib_array(data, damage if name == damaged else None) for name, _, data in arrays]
+    offsets = [sum(len(b) for b in blobs[:k]) for k in range(len(blobs))]
+    tag = lambda k: (f'<DataArray type="{arrays[k][1]}" Name="{arrays[k][0]}"'  # noqa: E731
+                     + (' NumberOfComponents="3"' if k == 0 else "") + f' format="appended" offset="{offsets[k]}"/>')
+    head = "\n".join(['<?xml version="1.0"?>',
+                      '<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64"'
+                      ' compressor="vtkZLibDataCompressor">', "<UnstructuredGrid>",
+                      '<Piece NumberOfPoints="4" NumberOfCells="1">', "<Points>", tag(0), "</Points>", "<Cells>",
+                      tag(1), tag(2), tag(3), "</Cells>", "</Piece>", "</UnstructuredGrid>",
+                      '<AppendedData encoding="raw">', "_"])
+    body = b"".join(blobs)
+    if damage == "cut":  # the file ends 3 bytes into the damaged (last) array's zlib stream
+        return head.encode() + body[:offsets[-1] + 32 + 3]
+    return head.encode() + body + b"\n</AppendedData>\n</VTKFile>\n"
+
+
+def gen_bad_vtu():
+    for rel, array, damage, code, what in [
+            ("bad/vtu_zlib_block_count.vtu", "connectivity", "blocks", "wrong-count",
+             "compressed connectivity announcing 2^40 blocks (a header larger than the file)"),
+            ("bad/vtu_zlib_corrupt_stream.vtu", "Points", "stream", "syntax",
+             "compressed Points whose zlib stream starts with 4 bytes 0xff"),
+            ("bad/vtu_zlib_truncated.vtu", "types", "cut", "truncated",
+             "file ends 3 bytes into the zlib stream of the last array (types)")]:
+        save(rel, tetrahedron_vtu(array, damage))
+        bad(rel, code, VTU_LINES[array], "-", what)
+
 # ----------------------------------------------------------------------------------------------
 
 
@@ -1108,6 +1158,7 @@ def main():
     gen_3d()
     gen_2d()
     gen_bad()
+    gen_bad_vtu()
     write_manifest()
     write_readme()
     for rel, code, line, ids in MANIFEST:

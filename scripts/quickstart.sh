@@ -5,5 +5,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
 "$root/build/bin/pqmesh" mesh "$root/data/2d/comb.poly" -o "$root/build/comb.vtu"
-# The 3D mesher on the L-block (checked before it is written; ALGORITHM.md §13).
+# The 3D mesher on the L-block (checked before it is written;
+# docs/algorithm/mesh3d.md).
 "$root/build/bin/pqmesh" mesh "$root/data/3d/l_block.poly" -o "$root/build/l_block.vtu"

@@ -202,9 +202,10 @@ int run_mesh(const std::vector<std::string>& argv) {
   // 2D: every block from the mmap threshold up gets huge pages. The quadtree's
   // nodes are in huge-page slabs that go back to the system with the tree
   // (tree/chunked_vector.hpp), so the later stages' tables are fresh mappings:
-  // on the plate of docs/ALGORITHM.md §8.11 this takes the run from 24.9k to
-  // 6.9k page faults at no higher peak. (3D keeps the default: a 1 MiB
-  // threshold raised data/3d/plate_holes.poly's peak by about 2 MB.)
+  // on the plate of docs/algorithm/quad2d.md "Speed and memory" this takes the
+  // run from 24.9k to 6.9k page faults at no higher peak. (3D keeps the
+  // default: a 1 MiB threshold raised data/3d/plate_holes.poly's peak by about
+  // 2 MB.)
   set_large_page_threshold(std::size_t{1} << 20);
   const Args args(argv, {"--quiet", "--protect-edges"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});

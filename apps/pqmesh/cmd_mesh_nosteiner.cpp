@@ -7,7 +7,8 @@
 // There is no separate --fixed-boundary mode: this mode already keeps every
 // input vertex and segment exactly (a subdivided boundary, straight angles
 // included, is kept as given), which is what local remeshing needs
-// (docs/ALGORITHM.md §11.13). The flag is accepted as a synonym.
+// (docs/algorithm/nosteiner2d.md "Fixed-boundary mode"). The flag is accepted
+// as a synonym.
 #include <cstdio>
 #include <iostream>
 
@@ -79,7 +80,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
             << s.construction_triangles << " triangles -> " << fmt4_degrees(s.pipeline_min_angle) << " deg ("
             << s.pass_flips << " flips, " << s.pass_removals << " removals, " << s.pass_moves << " moves, "
             << s.pass_cavities << " cavities; quality pass " << (options.quality_pass ? "on" : "off")
-            << ", docs/ALGORITHM.md 11.12)\n"
+            << ", docs/algorithm/nosteiner2d.md \"Fallbacks and the CDT comparison\")\n"
             << "cdt        constrained Delaunay of the input (no point added): min " << fmt4_degrees(s.cdt_min_angle)
             << " deg; pipeline / cdt = "
             << (s.cdt_min_angle > 0 ? fmt4(s.pipeline_min_angle / s.cdt_min_angle) : "-") << '\n'

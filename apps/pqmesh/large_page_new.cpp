@@ -40,11 +40,11 @@ namespace {
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 // Blocks of large_threshold bytes or more get huge pages. The default is the
 // threshold of LargePageAllocator. Lower ones (1 or 3 MiB: the per-vertex tables
-// of 3.4 MB on the plate of docs/ALGORITHM.md §8.11) raised the 2D peak by 18 MB
-// while the quadtree's nodes lived in the malloc heap (later arrays were served
-// from the freed tree's heap space); since the nodes are in slabs of their own
-// (tree/chunked_vector.hpp) the 2D mesher sets 1 MiB (cmd_mesh.cpp). Set once,
-// before the work starts.
+// of 3.4 MB on the plate of docs/algorithm/quad2d.md "Speed and memory") raised
+// the 2D peak by 18 MB while the quadtree's nodes lived in the malloc heap
+// (later arrays were served from the freed tree's heap space); since the nodes
+// are in slabs of their own (tree/chunked_vector.hpp) the 2D mesher sets 1 MiB
+// (cmd_mesh.cpp). Set once, before the work starts.
 std::size_t large_threshold = std::size_t{4} << 20;
 
 // The heap (grow_heap_in_huge_pages): malloc extends it by at least

@@ -1,7 +1,8 @@
 #pragma once
-// The mesh validity checker (DESIGN.md §7). Every test and benchmark runs it on
-// every mesh, so its decisions are exact (src/predicates) and its running time
-// is linear up to sorting (one sort of the element faces, bucketed by vertex).
+// The mesh validity checker (docs/algorithm/quality.md "The validity checker").
+// Every test and benchmark runs it on every mesh, so its decisions are exact
+// (src/predicates) and its running time is linear up to sorting (one sort of
+// the element faces, bucketed by vertex).
 //
 // What "valid" means, and why the checks below are sufficient, is argued in the
 // comment block at the top of src/mesh/check3d.cpp (2D: src/mesh/check2d.cpp).

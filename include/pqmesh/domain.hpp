@@ -1,5 +1,5 @@
 #pragma once
-// Validated input domains (DESIGN.md §4.1, thesis §1.4).
+// Validated input domains (docs/algorithm/input.md, thesis §1.4).
 //
 // make_domain() checks every assumption the meshers rely on and throws a
 // DomainError naming the offending ids (in the file's numbering) and file line

@@ -1,8 +1,9 @@
 #pragma once
-// Errors thrown by the library (DESIGN.md §9). The library never prints or exits:
-// bad input throws an InvalidInput subclass that carries the offending ids and,
-// where the input came from a file, the file and line; broken internal
-// invariants throw InternalError with the source location.
+// Errors thrown by the library (docs/DESIGN_RULES.md "Conventions"). The
+// library never prints or exits: bad input throws an InvalidInput subclass that
+// carries the offending ids and, where the input came from a file, the file and
+// line; broken internal invariants throw InternalError with the source
+// location.
 #include <cstdint>
 #include <source_location>
 #include <stdexcept>

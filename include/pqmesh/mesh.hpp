@@ -1,5 +1,6 @@
 #pragma once
-// Output meshes: flat arrays of indices plus markers (DESIGN.md §8).
+// Output meshes: flat arrays of indices plus markers (docs/DESIGN_RULES.md
+// "Data layout and speed").
 //
 // Orientation convention (checked by the validity checker):
 //   TriMesh2: every triangle (a, b, c) is counter-clockwise, orient2d(a,b,c) > 0.

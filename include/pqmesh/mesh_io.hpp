@@ -51,13 +51,15 @@ namespace pqmesh {
 enum class MeshFormat {
   Vtu,            // .vtu  VTK XML UnstructuredGrid (volume/area cells only)
   Msh41,          // .msh  Gmsh 4.1 ASCII
+  Msh41Binary,    // .msh  Gmsh 4.1 binary (chosen explicitly; .msh means Msh41)
   Msh22,          // .msh  Gmsh 2.2 ASCII
   Medit,          // .mesh Medit ASCII (MeshVersionFormatted 2)
   TetgenNodeEle,  // .node + .ele + (.face in 3D | .poly in 2D), 1-based
   Svg,            // .svg  picture of a 2D mesh (write only)
 };
 
-// Stable lower-case name: "vtu", "msh41", "msh22", "medit", "tetgen", "svg".
+// Stable lower-case name: "vtu", "msh41", "msh41b", "msh22", "medit",
+// "tetgen", "svg".
 const char* to_string(MeshFormat format);
 
 // The format a file name asks for, by extension (case-sensitive): .vtu, .msh
@@ -85,8 +87,11 @@ struct WriteOptions {
   // Empty: taken from the path by mesh_format_from_path(path).
   std::optional<MeshFormat> format;
   // Vtu only: true writes raw appended binary data (fast path), false ASCII.
-  // Msh is always written as ASCII.
+  // Msh: the format decides (Msh41Binary is binary, Msh41/Msh22 ASCII).
   bool binary = true;
+  // Vtu with binary only: compress every appended array with zlib
+  // (compressor="vtkZLibDataCompressor"); smaller files, slower writing.
+  bool compress = false;
   std::vector<CellField> cell_fields;
   // Svg only: width of the picture in pixels (height follows the aspect ratio).
   double svg_width = 800;

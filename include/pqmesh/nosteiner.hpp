@@ -3,7 +3,7 @@
 // g(P) on the min angle any such triangulation can reach, the per-(vertex,
 // edge) spirals it is built from, and the Steiner-free CDT baseline.
 //
-// Definitions (thesis §5.0-§5.1; docs/ALGORITHM_ch5_draft.md walks them):
+// Definitions (thesis §5.0-§5.1; docs/algorithm/nosteiner2d.md walks them):
 //   For a vertex V, an edge E = VU of P and a point W of a closed face of dP
 //   disjoint from E ("W interferes with E"), let
 //     omega = angle UVW measured from E through the interior of P at V,
@@ -18,19 +18,19 @@
 //   g(P) = min( min over vertices of the interior angle alpha_V,
 //               min over eligible (E, W) of h(E, W) ).
 //
-// The constant, made explicit (proved in docs/ALGORITHM_ch5_draft.md from
+// The constant, made explicit (proved in docs/algorithm/nosteiner2d.md from
 // Theorems 17 and 21): every triangulation of P whose vertices on dP are the
 // vertices of P has min angle <= kUpperBoundConstant * g(P), with
 // kUpperBoundConstant = pi (1 + ln 2) ~= 5.32 (and trivially <= pi/3).
 //
-// Exactness (DESIGN.md §3): which faces interfere (vertex ids), whether a
-// vertex W is eligible (squared distance comparisons and orient2d, exact) and
-// whether an endpoint of an interfering edge lies inside each clipping region
-// are exact decisions. Floating point enters only in constructions: the
-// parameters where an interfering edge crosses a clipping boundary, the
-// angles (atan2) and logarithms, and the minimisation of h along an edge
-// piece (golden-section search on a quasiconvex function). Values of g are
-// therefore accurate to rounding, not exact; ties between equal values are
+// Exactness (docs/DESIGN_RULES.md "Exact decisions"): which faces interfere
+// (vertex ids), whether a vertex W is eligible (squared distance comparisons
+// and orient2d, exact) and whether an endpoint of an interfering edge lies
+// inside each clipping region are exact decisions. Floating point enters only
+// in constructions: the parameters where an interfering edge crosses a clipping
+// boundary, the angles (atan2) and logarithms, and the minimisation of h along
+// an edge piece (golden-section search on a quasiconvex function). Values of g
+// are therefore accurate to rounding, not exact; ties between equal values are
 // broken by the documented enumeration order (first minimum wins).
 #include <string>
 #include <utility>
@@ -125,7 +125,8 @@ struct VertexWedge {
   // Index of the first of the two spokes of Fig. 5.10 (length |VX|); -1 when
   // there are none (Kept::NextOnly / PrevOnly: one spiral covers the corner)
   // and after polygon_q's spoke floor re-spaced a run of spokes (the indices
-  // no longer name Fig. 5.10's spokes; docs/ALGORITHM.md §11.7, spoke_floor.hpp).
+  // would not name Fig. 5.10's spokes; docs/algorithm/nosteiner2d.md "Welding
+  // and the polygon Q", spoke_floor.hpp).
   int thirds_first = -1;
   std::vector<WedgeSpoke> spokes;               // phi increasing from 0 (on E) to alpha (on F)
   double min_angle = 0;                         // over the triangles (V, spoke_i, spoke_i+1), from polar data
@@ -145,11 +146,11 @@ struct PolygonQ {
                                            // interior of Q on the left
   std::vector<VertexWedge> vertex_wedges;  // after the rotations, in loop order
   // Every wedge triangle keeps its orientation after rounding (exact
-  // orient2d on the rounded spoke ends). Since the spoke floor (polygon_q
-  // raises every spoke to >= delta_P(V)/16, docs/ALGORITHM.md §11.7) the
-  // spokes no longer shrink below double resolution, and this holds on every
-  // test input (data/2d, the hard cases, 300 random polygons); when it does
-  // not, the pipeline falls back to the CDT of P and says so.
+  // orient2d on the rounded spoke ends). The spoke floor (polygon_q raises
+  // every spoke to >= delta_P(V)/16, docs/algorithm/nosteiner2d.md "Welding and
+  // the polygon Q") keeps the spokes above double resolution, so this holds on
+  // every test input (data/2d, the hard cases, 300 random polygons); when it
+  // does not, the pipeline falls back to the CDT of P and says so.
   bool representable = true;
   double min_angle = 0;                    // smallest angle of Q^c (floating point)
 };
@@ -169,8 +170,8 @@ struct SteinerFreeOptions {
   // disjoint from E. true: the other side at U (sharing only U with E) also
   // counts, through its eligible part (closer to V than to U). The wedge
   // construction needs it in thin spikes, where the two base corners' spirals
-  // otherwise overlap (docs/ALGORITHM_ch5_draft.md §11.7); g(P) is unchanged
-  // on the corpus and the 300 random polygons.
+  // otherwise overlap (docs/algorithm/nosteiner2d.md "Welding and the polygon
+  // Q"); g(P) is unchanged on the corpus and the 300 random polygons.
   bool sides_at_far_end = false;
 };
 
@@ -205,14 +206,15 @@ double min_triangle_angle(const TriMesh2& mesh);
 
 
 // ---- Thesis §5.2-§5.3: delta, the shrink of Q to R, and R meshed ----------
-// (docs/ALGORITHM.md §11.8-11.9.)
+// (docs/algorithm/nosteiner2d.md "Delta and the shrink to R", "Meshing R".)
 
 // Thesis §5.1 before Theorem 28: delta(F) for a closed face F (vertex or side)
 // of a polygon = min over closed faces F' of F of the distance from F' to the
 // closest face disjoint from F'. Deviation: Euclidean distance instead of the
 // geodesic distance inside the polygon (a lower bound of it, so R only moves
-// less far from dQ; see §11.8). Loops as in PolygonQ (interior on the left);
-// faces of every loop count. A measurement, not a decision.
+// less far from dQ; see docs/algorithm/nosteiner2d.md "Delta and the shrink
+// to R"). Loops as in PolygonQ (interior on the left); faces of every loop
+// count. A measurement, not a decision.
 struct PolygonDelta {
   std::vector<std::vector<double>> vertex;  // delta(V) of loop vertex k
   std::vector<std::vector<double>> side;    // delta(E) of loop side k -> k+1 (its two ends included)
@@ -238,7 +240,8 @@ struct PolygonR {
   // false when some shrink distance delta(E)/4 is below kRShrinkResolution
   // times |x| + |y| of its Q vertex: the offsets would be a few thousand ulps
   // or less and rounding decides R's shape (the spiral-depth limit of
-  // docs/ALGORITHM.md §11.6 carried into R). R is still constructed.
+  // docs/algorithm/nosteiner2d.md "Known limits" carried into R). R is still
+  // constructed.
   bool representable = true;
   bool valid = true;     // every shrunk side keeps its direction and Case 2 sides turn as at V (exact checks)
   std::string failure;   // first violation when !valid
@@ -274,7 +277,8 @@ RMesh mesh_r(const PolygonR& r, const QuadMeshOptions& options = {});
 
 
 // ---- Thesis ch. 5 assembled: the triangulation without boundary Steiner points ----
-// (src/nosteiner2d/triangulate_nosteiner.cpp; docs/ALGORITHM.md §11.10-11.14.)
+// (src/nosteiner2d/triangulate_nosteiner.cpp; docs/algorithm/nosteiner2d.md
+// "Matching R to Q" to "Benchmark".)
 //
 // The mesh of P is Q^c (the welded wedges and edge triangles, §5.1.1) + the
 // region between dQ and dR (§5.4) + the mesh of R (§5.3). Every vertex other
@@ -285,8 +289,9 @@ RMesh mesh_r(const PolygonR& r, const QuadMeshOptions& options = {});
 // drawing, Steiner points strictly inside Q \ R only.
 //
 // Fallbacks (never silent; NoSteinerStats::path and fallback_reason say which
-// and why). Where a stage cannot be built in doubles (the spiral-depth limit of
-// §11.6, R below resolution §11.8) or a built stage fails the final check:
+// and why). Where a stage cannot be built in doubles (the spiral-depth limit
+// and R below resolution: docs/algorithm/nosteiner2d.md "Known limits", "Delta and the
+// shrink to R") or a built stage fails the final check:
 //   QOnly: Q^c + the constrained Delaunay triangulation of Q (no point added
 //          inside Q); used when R cannot be built or the full mesh fails.
 //   Cdt:   the constrained Delaunay triangulation of P (steiner_free_cdt); used
@@ -304,8 +309,9 @@ inline constexpr int kRegionQCdt = 4;     // QOnly fallback: the CDT of Q
 inline constexpr int kRegionPCdt = 5;     // Cdt fallback: the CDT of P
 
 struct NoSteinerOptions {
-  // The mesher for R (§5.3). Default: refinement towards 20 degrees (§11.9:
-  // both settings have the properties of §5.5.1; refined angles are better).
+  // The mesher for R (§5.3). Default: refinement towards 20 degrees
+  // (docs/algorithm/nosteiner2d.md "Meshing R": both settings have the properties of
+  // §5.5.1; refined angles are better).
   QuadMeshOptions r_mesh;
   // Run check_mesh (no_boundary_steiner) on the assembled mesh and fall back
   // (QOnly, then Cdt) when it fails. Off only for timing the stages alone.
@@ -317,24 +323,26 @@ struct NoSteinerOptions {
   // Steiner points; the pipeline's min angle stays in pipeline_min_angle.
   // The last safety net: with quality_pass the pipeline itself is never below
   // the CDT (the pass's last candidate re-triangulates the whole mesh to the
-  // CDT of P; asserted on every test input, docs/ALGORITHM.md §11.12), so this
-  // fires only with quality_pass off (the construction alone is below the CDT
-  // on most inputs: the thesis's constants are small), a pass stopped by its
-  // step bound, or a pass output that failed verify. On by default.
+  // CDT of P; asserted on every test input, docs/algorithm/nosteiner2d.md
+  // "Fallbacks and the CDT comparison"), so this fires only with quality_pass
+  // off (the construction alone is below the CDT on most inputs: the thesis's
+  // constants are small), a pass stopped by its step bound, or a pass output
+  // that failed verify. On by default.
   bool keep_better_cdt = true;
   // Q \ R (§5.4) connected by the thesis's per-piece fans (Figs. 5.17,
   // 5.19-5.21) instead of the CDT of the same vertices. The CDT's min angle
   // is never smaller (Lawson: same vertices, same constraints); measured
-  // about half on the test inputs (docs/ALGORITHM.md §11.10). For
-  // comparison with the thesis's construction.
+  // about half on the test inputs (docs/algorithm/nosteiner2d.md "Matching R to
+  // Q"). For comparison with the thesis's construction.
   bool thesis_fans = false;
   // Quality post-pass on the Full / QOnly mesh (a deviation beyond the
-  // thesis, docs/ALGORITHM.md §11.12; src/nosteiner2d/quality_pass.hpp):
-  // flips, removals and moves of Steiner points at the worst triangle while
-  // that raises its angle, then CDT re-triangulated cavities up to the whole
-  // mesh. Never lowers the min angle, never stops below the CDT of P, adds no
-  // point, keeps dP exactly at the input vertices. construction_min_angle keeps the
-  // thesis construction's value (the one bounded by k g(P)).
+  // thesis, docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison";
+  // src/nosteiner2d/quality_pass.hpp): flips, removals and moves of Steiner points
+  // at the worst triangle while that raises its angle, then CDT re-triangulated
+  // cavities up to the whole mesh. Never lowers the min angle, never stops below
+  // the CDT of P, adds no point, keeps dP exactly at the input vertices.
+  // construction_min_angle keeps the thesis construction's value (the one bounded
+  // by k g(P)).
   bool quality_pass = true;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Input domains (DESIGN.md §4.1, thesis §1.4).
+// Input domains (docs/algorithm/input.md, thesis §1.4).
 //
 //   Pslg2 — a planar straight-line graph as Triangle's .poly describes it; the
 //           2D meshers accept the ones that bound a polygon with holes.

@@ -4,7 +4,7 @@
 // out, with every angle bounded below in terms of the smallest input angle
 // and a triangle count within a constant of the fewest a bounded-angle mesh
 // needs. Stages and the places where we deviate from the thesis:
-// docs/ALGORITHM.md §8.
+// docs/algorithm/quad2d.md.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -34,11 +34,13 @@ struct QuadMeshOptions {
   // The edge protection step of thesis §4.1.4-4.1.5 (split every box on an
   // edge once more). Off by default: the triangulation does not need it, and
   // it doubles the boundary resolution and lowers the min angle next to
-  // vertex boxes (measurements: docs/ALGORITHM.md §8.4). CLI --protect-edges.
+  // vertex boxes (measurements: docs/algorithm/quad2d.md "Termination"). CLI
+  // --protect-edges.
   bool protect_edges = false;
   // Delaunay refinement of the quadtree's triangulation towards this smallest
   // angle, in degrees (0: off). Triangles at input angles below 60 degrees are
-  // excused (docs/ALGORITHM.md §8.10). CLI --refine-angle DEG.
+  // excused (docs/algorithm/quad2d.md "Delaunay refinement pass"). CLI
+  // --refine-angle DEG.
   double refine_angle_degrees = 20;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // The angle bound of the 2D quadtree mesher with its default refinement pass
-// (docs/ALGORITHM.md §8.8, §8.10):
+// (docs/algorithm/quad2d.md "Angle bound", "Delaunay refinement pass"):
 //     min angle >= min(kQuadMeshBoundC * alpha, kQuadMeshBoundTheta0Degrees)
 // with alpha the smallest interior angle of the input polygon, and 20 degrees
 // (the refinement target) when alpha >= 60 degrees. The thesis proves a bound

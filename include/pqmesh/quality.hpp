@@ -1,6 +1,6 @@
 #pragma once
-// Element quality measures of thesis ch. 3 (DESIGN.md §6), per element and as
-// summaries with histograms.
+// Element quality measures of thesis ch. 3 (docs/algorithm/quality.md "Quality
+// measures"), per element and as summaries with histograms.
 //
 //   aspect ratio   = R_enc / r, R_enc the radius of the SMALLEST ENCLOSING ball
 //                    of the simplex (ch. 3 "Aspect ratio": not the circumsphere in

@@ -3,7 +3,7 @@
 // polyhedral domain in, a tetrahedral mesh out, with the input facet markers
 // on the boundary triangles and a region attribute per tetrahedron.
 //
-// Pipeline (docs/ALGORITHM.md §13): the octree of thesis §4.1 (generic grid,
+// Pipeline (docs/algorithm/mesh3d.md): the octree of thesis §4.1 (generic grid,
 // separating splits of §4.1.7 steps 6 and 9, the user size function of §1.1),
 // the kind of every leaf (empty, vertex / edge / facet cone, two facets), one
 // box job per leaf, the box tetrahedra of §4.5 (src/tet3d), then the boundary
@@ -39,7 +39,7 @@ namespace pqmesh {
 // bounded random families (seeds 0..199 each), the flat-edge family (seeds
 // 12..199) and the harsh family's seeds 0..19 is 4,568 (bounded seed 193),
 // so C keeps 20% above it
-// (docs/ALGORITHM.md §13). The summary of `pqmesh mesh` prints C / alpha
+// (docs/algorithm/mesh3d.md). The summary of `pqmesh mesh` prints C / alpha
 // next to the achieved aspect ratio.
 inline constexpr double kMeasuredAspectAlphaC = 5500;
 
@@ -64,8 +64,9 @@ struct TetMeshProgress {
 struct TetMeshOptions {
   double max_size = 0;         // largest box side anywhere; 0: no limit. CLI --max-size
   TetSizeField size_field;     // empty: none. CLI --size-field
-  // Shift the octree grid off every input coordinate (ALGORITHM.md §10
-  // "Generic grid"); false: the aligned grid. CLI --aligned-grid sets false.
+  // Shift the octree grid off every input coordinate
+  // (docs/algorithm/octree3d.md "Generic grid"); false: the aligned grid. CLI
+  // --aligned-grid sets false.
   bool generic_grid = true;
   // Warping of §4.3, both passes, for every box kind (tet3d/warp.hpp).
   bool warp = true;
@@ -88,14 +89,16 @@ struct TetMeshStats {
   std::int64_t facet_inside = 0, facet_on = 0, facet_beyond = 0;  // facet boxes per §4.5.4 case
   std::int64_t warped = 0;                                // vertices moved by warping (§4.3, both passes)
   // Warp tables rebuilt because a warp inverted a tetrahedron (the rebuild
-  // loop of tet3d, docs/ALGORITHM.md §12.5); 0 when none inverted.
+  // loop of tet3d, docs/algorithm/tet3d_warp.md); 0 when none inverted.
   std::int64_t warp_rebuilds = 0;
   // Rounds of the worst-box freeze kept: after the rebuild loop, a mesh whose
   // worst tetrahedron is flat has the warps of that tetrahedron's box frozen
-  // while its worst tetrahedron strictly improves (docs/ALGORITHM.md §12.5).
+  // while its worst tetrahedron strictly improves
+  // (docs/algorithm/tet3d_warp.md).
   std::int64_t worst_box_rounds = 0;
   // Squares of united vertex boxes triangulated in one piece per plane group
-  // (coplanar facets joined by flat edges; docs/ALGORITHM.md §12.4).
+  // (coplanar facets joined by flat edges; docs/algorithm/tet3d_boxes.md "The
+  // square dispatcher").
   std::int64_t split_squares = 0;
   // Warping was asked for but the warped boxes threw (a warp that inverts a
   // tetrahedron the freeze loop of tet3d cannot attribute): the mesh is the

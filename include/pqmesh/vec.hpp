@@ -1,7 +1,7 @@
 #pragma once
 // Small value types for points and vectors. Arithmetic here is plain double:
-// these are constructions, never decisions (DESIGN.md §3; decisions go through
-// src/predicates).
+// these are constructions, never decisions (docs/DESIGN_RULES.md "Exact
+// decisions"; decisions go through src/predicates).
 #include <cmath>
 
 namespace pqmesh {

@@ -1,4 +1,5 @@
-// The validity checker for triangle meshes (DESIGN.md §7).
+// The validity checker for triangle meshes (docs/algorithm/quality.md "The
+// validity checker").
 //
 // The 2D analogue of check3d.cpp, whose comment block gives the argument in
 // full; here one dimension lower:

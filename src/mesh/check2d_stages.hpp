@@ -32,7 +32,8 @@ inline bool in_box(Vec2 p, Vec2 a, Vec2 b) {
 inline bool on_segment(Vec2 p, Vec2 a, Vec2 b) { return in_box(p, a, b) && orient2d(a, b, p) == Sign::Zero; }
 
 // Rounded Steiner points on slanted segments: see within_ulp_of_segment in
-// src/predicates/predicates.hpp and docs/ALGORITHM.md §5.
+// src/predicates/predicates.hpp and docs/algorithm/quality.md "The validity
+// checker".
 inline bool near_segment(Vec2 p, Vec2 a, Vec2 b) { return within_ulp_of_segment(p, a, b); }
 
 // A hash of a point's exact coordinates: equal points (also with -0 against

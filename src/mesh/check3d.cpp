@@ -1,4 +1,5 @@
-// The validity checker for tetrahedral meshes (DESIGN.md §7).
+// The validity checker for tetrahedral meshes (docs/algorithm/quality.md "The
+// validity checker").
 //
 // ---------------------------------------------------------------------------
 // What is checked, and why it is enough
@@ -26,13 +27,14 @@
 // Stage 4 (with the domain P, facets oriented outward):
 //   (a) every triangle of B is assigned to a facet f: its vertices lie in f's
 //       plane, exactly or as faithful roundings (f's plane meets the box of
-//       neighbouring doubles of the vertex, within_ulp_of_plane; ALGORITHM.md
-//       §5), within f's bounding box, and, only when several coplanar facets
-//       qualify, in the closed facet polygon (exact crossing test in the
-//       projection that drops the dominant axis of f's normal; a vertex
-//       within an ulp of a loop side is on it). Its orientation must agree
-//       with f's (exact, in the same projection). A vertex farther than an
-//       ulp from every facet plane makes its triangles fail here.
+//       neighbouring doubles of the vertex, within_ulp_of_plane;
+//       docs/algorithm/quality.md "The validity checker"), within f's bounding
+//       box, and, only when several coplanar facets qualify, in the closed
+//       facet polygon (exact crossing test in the projection that drops the
+//       dominant axis of f's normal; a vertex within an ulp of a loop side is
+//       on it). Its orientation must agree with f's (exact, in the same
+//       projection). A vertex farther than an ulp from every facet plane makes
+//       its triangles fail here.
 //   (b) every input edge (DomainEdge) is walked from its first to its second
 //       vertex along edges of B, each step to the unique B-neighbour lying on
 //       the edge, exactly or within an ulp (within_ulp_of_segment), strictly
@@ -62,8 +64,9 @@
 // With rounded vertices, the argument holds for the mesh whose rounded
 // vertices are replaced by the exact points of P's facets and edges they
 // stand for; the stored mesh differs from it by under an ulp per coordinate
-// at those vertices (ALGORITHM.md §5). Such vertices are on dP by (a) and
-// are not passed to locate() (a rounding may lie an ulp outside P).
+// at those vertices (docs/algorithm/quality.md "The validity checker"). Such
+// vertices are on dP by (a) and are not passed to locate() (a rounding may lie
+// an ulp outside P).
 //
 // Without a domain (check_mesh_topology) only stages 1-3 run. They are local:
 // a mesh that covers a region twice (winding number 2) can pass them.

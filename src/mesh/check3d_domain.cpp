@@ -46,7 +46,8 @@ void Checker3::walk_edges(const Domain3& d) {
     const Vec3 pa = m_.vertices[A], pb = m_.vertices[B];
     const ChainWalk walk = walk_chain(faces_.boundary_adjacency, A, B, [&](int c, int w) {
       const Vec3 p = m_.vertices[w];
-      // On the edge exactly or within an ulp (ALGORITHM.md §5), and onward.
+      // On the edge exactly or within an ulp (docs/algorithm/quality.md "The
+      // validity checker"), and onward.
       return within_ulp_of_segment(p, pa, pb) && dot_sign(p, m_.vertices[c], pb) == Sign::Negative;
     });
     const int c = walk.chain.back();

@@ -164,8 +164,9 @@ void Checker3::prepare_facets(const Domain3& d) {
 
 // Exact: p (already known to be in the facet's plane, or within an ulp of it)
 // lies in the closed facet polygon. A point within an ulp of a loop side is on
-// the loop (the rounding rule of ALGORITHM.md §5); otherwise the crossing
-// parity of a ray in the +u direction of the projection decides.
+// the loop (the rounding rule of docs/algorithm/quality.md "The validity
+// checker"); otherwise the crossing parity of a ray in the +u direction of the
+// projection decides.
 bool Checker3::in_closed_facet(const Domain3& d, int f, Vec3 p) const {
   const FacetPlane& fp = planes_[f];
   const auto& pv = d.plc.vertices;
@@ -175,7 +176,8 @@ bool Checker3::in_closed_facet(const Domain3& d, int f, Vec3 p) const {
     const std::size_t n = loop.size();
     for (std::size_t k = 0; k < n; ++k) {
       const Vec3 a = pv[loop[k]], b = pv[loop[(k + 1) % n]];
-      if (within_ulp_of_segment(p, a, b)) return true;  // on the loop (ALGORITHM.md §5)
+      // On the loop (docs/algorithm/quality.md "The validity checker").
+      if (within_ulp_of_segment(p, a, b)) return true;
       const Sign o = orient2d_projected(a, b, p, fp.axis);
       const bool a_above = axis_coord(a, w) > axis_coord(p, w), b_above = axis_coord(b, w) > axis_coord(p, w);
       if (a_above != b_above && ((b_above && o == Sign::Positive) || (a_above && o == Sign::Negative)))

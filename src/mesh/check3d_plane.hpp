@@ -1,6 +1,7 @@
 #pragma once
-// The ulp rule of docs/ALGORITHM.md §5 for points near a fixed plane, decided
-// on two corners of the point's ulp box instead of eight.
+// The ulp rule of docs/algorithm/quality.md "The validity checker" for points
+// near a fixed plane, decided on two corners of the point's ulp box instead of
+// eight.
 //
 // within_ulp_of_plane(p, a, b, c) (predicates.hpp) asks whether orient3d(a,
 // b, c, x) takes one strict sign on all eight corners x of p's ulp box.

@@ -71,9 +71,10 @@ struct FacetPlane {
 };
 
 // p lies in the facet's plane, or is a faithful rounding of a point of it
-// (within_ulp_of_plane, docs/ALGORITHM.md §5), and in its bounding box
-// widened by an ulp. Exact. (A point on the plane lies inside its ulp box, so
-// the plane meets the box: no separate orient3d(p) == 0 test.)
+// (within_ulp_of_plane, docs/algorithm/quality.md "The validity checker"), and
+// in its bounding box widened by an ulp. Exact. (A point on the plane lies
+// inside its ulp box, so the plane meets the box: no separate orient3d(p) == 0
+// test.)
 inline bool on_facet_plane(const FacetPlane& fp, Vec3 p) {
   const Vec3 lo{next_down(p.x), next_down(p.y), next_down(p.z)};
   const Vec3 hi{next_up(p.x), next_up(p.y), next_up(p.z)};

@@ -12,11 +12,12 @@
 // whose upper face lies on a facet does not list that facet in its component,
 // the outward perturbation of cube_components.hpp keeping it outside the
 // shifted cube). T lies on facet F when all three vertices pass
-// within_ulp_of_plane for F's plane (the checker's rule, ALGORITHM.md §5).
-// Several coplanar facets can pass; then the one whose facet triangles contain
-// T's centroid, projected along the dominant axis of the plane and decided by
-// exact orient2d_projected on the (rounded) centroid, is taken. A boundary
-// triangle on no facet of its leaf throws InternalError naming it.
+// within_ulp_of_plane for F's plane (the checker's rule,
+// docs/algorithm/quality.md "The validity checker"). Several coplanar facets
+// can pass; then the one whose facet triangles contain T's centroid, projected
+// along the dominant axis of the plane and decided by exact orient2d_projected
+// on the (rounded) centroid, is taken. A boundary triangle on no facet of its
+// leaf throws InternalError naming it.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -59,7 +59,7 @@ BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder) {
     }
     throw MeshNotSupported(n, mv3d::to_string(cls.kind),
                            "leaf " + std::to_string(n) + " (" + describe_leaf(builder, n, faces) + "): kind " +
-                               mv3d::to_string(cls.kind) + ", not supported yet (issue 5)");
+                               mv3d::to_string(cls.kind) + ", not supported by the 3D mesher");
   }
   return plan;
 }
@@ -68,8 +68,8 @@ BoxPlan plan_all_kinds(const mv3d::OctreeBuilder& builder) {
   tet3d::BoxJobs bj = tet3d::box_jobs(builder);
   if (!bj.problems.empty())
     throw MeshNotSupported(-1, "problem",
-                           bj.problems.front() + ": not supported yet (issue 5; " + std::to_string(bj.problems.size()) +
-                               " leaves not covered)");
+                           bj.problems.front() + ": not supported by the 3D mesher (" +
+                               std::to_string(bj.problems.size()) + " leaves not covered)");
   BoxPlan plan;
   plan.leaves_per_kind = bj.leaves;
   for (const std::int64_t k : bj.leaves) plan.leaves += k;

@@ -497,10 +497,10 @@ bool OctreeBuilder::vertex_crowded(std::int32_t node) const {
 // Thesis §4.1.4 "Edge crowded": b (unprotected, no vertex, outside every united
 // vertex box) holds an edge e, and a face G of P ∧ ex(b) other than e and its
 // two superfacets interferes. Vertices are ignored (§4.1.4). Like the 2D edge
-// rule (ALGORITHM.md §8.3), a G that shares a vertex with e interferes only if
-// it meets P ∧ b itself, or, for a facet, a balance-adjacent box (see
-// neighbour_would_be_of_no_kind); the thesis instead removes the protected
-// vertex boxes from ex(b), which we do not construct.
+// rule (docs/algorithm/quad2d.md "What the tree guarantees"), a G that shares a
+// vertex with e interferes only if it meets P ∧ b itself, or, for a facet, a
+// balance-adjacent box (see neighbour_would_be_of_no_kind); the thesis instead
+// removes the protected vertex boxes from ex(b), which we do not construct.
 bool OctreeBuilder::edge_crowded(std::int32_t node) const {
   if (tree_.is_protected(node)) return false;
   const NodeData3& d = data(node);

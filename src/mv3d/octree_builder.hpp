@@ -1,6 +1,6 @@
 #pragma once
 // The octree of the 3D mesher (thesis §4.1, §4.1.7), on the shared Tree<3> of
-// src/tree; mirrors quad2d/quadtree_builder.hpp (docs/ALGORITHM.md §8).
+// src/tree; mirrors quad2d/quadtree_builder.hpp (docs/algorithm/quad2d.md).
 //
 // Every node carries one component of P ∩ cube (§4.1.1 "Duplicate"): its
 // NodeData3 lists the P vertices/edges/facets of that component and one facet
@@ -19,8 +19,9 @@
 //                 then record the 2x2x2 block around the grid corner nearest
 //                 the vertex as its united box (Lemma 1) and protect the leaf
 //                 holding the vertex; leaves of the vertex's component inside
-//                 the block get vertex_owner (as in 2D, ALGORITHM.md §8.2: no
-//                 Tree::merge, so the block still grades towards small boxes);
+//                 the block get vertex_owner (as in 2D,
+//                 docs/algorithm/quad2d.md "Phases": no Tree::merge, so the
+//                 block still grades towards small boxes);
 //   3. edge:      split edge-crowded boxes (§4.1.4);
 //   4. edge-separate: split once every unprotected leaf holding a P edge and
 //                 its balance-adjacent leaves (§4.1.7 step 6; the set is
@@ -84,13 +85,14 @@ struct OctreeOptions {
   // facet box and its balance-adjacent boxes split once before protection).
   // With them every leaf is one of the thesis's kinds (without them a
   // protected box may hold three facets of a vertex outside it); they cost
-  // about 10x the leaves (ALGORITHM.md §10). Off only
+  // about 10x the leaves (docs/algorithm/octree3d.md). Off only
   // for callers that study other stages on smaller trees (the tet3d tests).
   bool separate = true;
-  // Generic grid (tree/root_cube.hpp choose_generic_root_cube; ALGORITHM.md
-  // §10): every box plane is shifted by a fixed offset so that no input vertex
-  // coordinate lies on a box plane of any level the tree may use. Off by
-  // default (the aligned grid; the existing octree tests use it).
+  // Generic grid (tree/root_cube.hpp choose_generic_root_cube;
+  // docs/algorithm/octree3d.md): every box plane is shifted by a fixed offset
+  // so that no input vertex coordinate lies on a box plane of any level the
+  // tree may use. Off by default (the aligned grid; the existing octree tests
+  // use it).
   bool generic_grid = false;
 };
 

@@ -1,7 +1,7 @@
 // g(P), the upper bound on the min angle of any triangulation without
 // boundary Steiner points (thesis ch. 5 introduction, Theorems 17, 21), from
 // the empty spirals of all (V, E) pairs; the constant is derived in
-// docs/ALGORITHM_ch5_draft.md.
+// docs/algorithm/nosteiner2d.md.
 #include <algorithm>
 #include <cmath>
 #include <limits>

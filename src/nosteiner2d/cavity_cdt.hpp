@@ -1,6 +1,7 @@
 #pragma once
 // Re-triangulation of a cavity without its inner vertices, for the quality
-// post-pass (quality_pass.hpp; docs/ALGORITHM.md §11.12).
+// post-pass (quality_pass.hpp; docs/algorithm/nosteiner2d.md "Fallbacks and the
+// CDT comparison").
 //
 // A cavity is a set of triangles of a conforming mesh that is connected
 // across edges; its union may have holes (input holes of P, or mesh triangles

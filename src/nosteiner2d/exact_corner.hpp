@@ -1,8 +1,9 @@
 #pragma once
-// Exact decisions for the shrink of Q to R (thesis §5.2, DESIGN.md §3): the
-// 3 pi / 4 test of the two vertex cases and the direction of a shrunk side.
-// Both are evaluated on the exact binary values of the constructed doubles
-// (GMP rationals), so they are decisions about the polygons as represented.
+// Exact decisions for the shrink of Q to R (thesis §5.2, docs/DESIGN_RULES.md
+// "Exact decisions"): the 3 pi / 4 test of the two vertex cases and the
+// direction of a shrunk side. Both are evaluated on the exact binary values of
+// the constructed doubles (GMP rationals), so they are decisions about the
+// polygons as represented.
 #include "pqmesh/vec.hpp"
 #include "predicates/predicates.hpp"
 

@@ -1,7 +1,8 @@
 #pragma once
-// Exact comparison of squared distances (DESIGN.md §3). The eligibility tests
-// of thesis Theorem 21 (|VW| <= L(E), |VW| <= |UW|) are decisions, so they
-// are made on the exact binary values of the input doubles.
+// Exact comparison of squared distances (docs/DESIGN_RULES.md "Exact
+// decisions"). The eligibility tests of thesis Theorem 21 (|VW| <= L(E), |VW|
+// <= |UW|) are decisions, so they are made on the exact binary values of the
+// input doubles.
 #include "pqmesh/vec.hpp"
 #include "predicates/predicates.hpp"
 

@@ -26,12 +26,12 @@
 //    go to different ends of E gives the quadrilateral (p, x, y, q) split by
 //    the diagonal with the larger min angle ("one more edge for the remaining
 //    trapezoid"). Match triangle: the fan from its apex V.
-// Exactness (DESIGN.md §3): a fan is used only when exact orient2d puts every
-// one of its triangles strictly counter-clockwise and every polygon side not
-// incident to the centre is not collinear with it (else a vertex would be a
-// T-junction). Otherwise (the thesis's six cases of Fig. 5.20 include squares
-// whose low parts are not visible from one vertex) the polygon is
-// triangulated by the constrained Delaunay triangulation of its own
+// Exactness (docs/DESIGN_RULES.md "Exact decisions"): a fan is used only when
+// exact orient2d puts every one of its triangles strictly counter-clockwise and
+// every polygon side not incident to the centre is not collinear with it (else
+// a vertex would be a T-junction). Otherwise (the thesis's six cases of Fig.
+// 5.20 include squares whose low parts are not visible from one vertex) the
+// polygon is triangulated by the constrained Delaunay triangulation of its own
 // vertices and sides (counted in FanStats::polygon_cdts).
 #include <array>
 #include <cstdint>

@@ -5,7 +5,8 @@
 // sides, but not to any edge of R or Q"), so Q^c needs no change; dR keeps
 // exactly the subdivision of R's mesh.
 //
-// Stages (docs/ALGORITHM.md §11.x "Matching R to Q"; src/nosteiner2d/match_*.cpp):
+// Stages (docs/algorithm/nosteiner2d.md "Matching R to Q";
+// src/nosteiner2d/match_*.cpp):
 //  1. match_figures.cpp: the match edges (each Q vertex to its R vertices)
 //     cut Q \ R into one match trapezoid per Q side E (E, its shrunk side F)
 //     and one match triangle per Case 2 Q vertex (§5.4 "Match faces"); the
@@ -30,12 +31,12 @@
 //     their corners on it at heights 2^-j, and equal heights give the same
 //     rounded point, which is one vertex ("adjacent figures share sides").
 //
-// Exactness (DESIGN.md §3): constructions (square vertices) are rounded;
-// every decision on them is exact: a square vertex is kept only when
-// orient2d puts it in the closure of its figure, or of its neighbour across
-// the match edge it was put on, strictly off dQ and dR; a point with the
-// coordinates of a kept one is that vertex. Levels are a construction choice
-// from rounded lengths, not a geometric decision.
+// Exactness (docs/DESIGN_RULES.md "Exact decisions"): constructions (square
+// vertices) are rounded; every decision on them is exact: a square vertex is
+// kept only when orient2d puts it in the closure of its figure, or of its
+// neighbour across the match edge it was put on, strictly off dQ and dR; a
+// point with the coordinates of a kept one is that vertex. Levels are a
+// construction choice from rounded lengths, not a geometric decision.
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -27,16 +27,16 @@
 // Steps (§5.4.1): n = max(max level, floor(log2(L(F) / h0)) - 1), capped
 // at kMaxSquareSteps. The thesis has n = floor(log(L(E)/d)) with its
 // h0 ~ k1 d, so that M_1 holds a constant number of edges; here h0 can be
-// far below d (§5.5.1 property 1 is only ~0.006 delta, docs/ALGORITHM.md
-// §11.9) and n is taken from h0 so that the squares of the last step span
-// about 2 to 4 of them. Measured (data/2d and random polygons): minus one
-// doubles the min angle against floor(log2(L(F)/h0)); minus two and plus one
-// are worse, and so are other heights for M_1 than d/2. At step i every
-// maximal run C of consecutive items of level <= i (m = |C| > 1)
-// gets squares around items (0,1), (2,3), ..., the last skipped when m is
-// odd, unless C ends with the last item of S, when the last square takes
-// three. A square of step i has level i + 1, its top on M_{n-i+1}, and
-// replaces its items in S.
+// far below d (§5.5.1 property 1 is only ~0.006 delta,
+// docs/algorithm/nosteiner2d.md "Meshing R") and n is taken from h0 so that the
+// squares of the last step span about 2 to 4 of them. Measured (data/2d and
+// random polygons): minus one doubles the min angle against
+// floor(log2(L(F)/h0)); minus two and plus one are worse, and so are other
+// heights for M_1 than d/2. At step i every maximal run C of consecutive items
+// of level <= i (m = |C| > 1) gets squares around items (0,1), (2,3), ..., the
+// last skipped when m is odd, unless C ends with the last item of S, when the
+// last square takes three. A square of step i has level i + 1, its top on
+// M_{n-i+1}, and replaces its items in S.
 #include <cstdint>
 #include <vector>
 

@@ -1,5 +1,5 @@
 // Thesis §5.3 "Triangulation of R" and §5.5.1: R is meshed by the 2D
-// quadtree mesher (quad_mesh, docs/ALGORITHM.md §8), which adds Steiner
+// quadtree mesher (quad_mesh, docs/algorithm/quad2d.md), which adds Steiner
 // points on dR (allowed: dR is not dP). The matching stage (§5.4) needs two
 // properties of the result (§5.5.1):
 //  1. every mesh edge G inside an R side F is at least a constant times
@@ -8,7 +8,7 @@
 //  2. any two mesh edges sharing a vertex have length ratio bounded by a
 //     constant.
 // They are measured here (floating point, reported, not decisions). Why the
-// quadtree mesher has them: docs/ALGORITHM.md §11.9.
+// quadtree mesher has them: docs/algorithm/nosteiner2d.md "Meshing R".
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -4,10 +4,11 @@
 // other vertices and the sides not at V). delta(E) for a side E = pq: the
 // minimum of delta(p), delta(q) and the distance from E to the closest face
 // disjoint from E (vertices other than p, q; sides sharing no end with E).
-// Deviation (docs/ALGORITHM.md §11.8): Euclidean distance, a lower bound of
-// the thesis's geodesic distance inside the polygon. With it R is shrunk by
-// at most as much as the thesis asks, so R stays inside Q, and Theorem 30's
-// argument (triangle inequality only) goes through for Euclidean delta.
+// Deviation (docs/algorithm/nosteiner2d.md "Delta and the shrink to R"):
+// Euclidean distance, a lower bound of the thesis's geodesic distance inside
+// the polygon. With it R is shrunk by at most as much as the thesis asks, so R
+// stays inside Q, and Theorem 30's argument (triangle inequality only) goes
+// through for Euclidean delta.
 //
 // A bucket grid proposes only faces within the current upper bound: every
 // face starts with a bound from a neighbouring disjoint face (the vertex two

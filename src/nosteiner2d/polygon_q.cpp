@@ -29,7 +29,8 @@
 // constant factor in the analysis of Fig. 5.11 (L(YU) >= 3/4 L(E) still holds).
 //
 // (3) Spokes are never shorter than delta_P(V) / 16 (spoke_floor.hpp): the
-// thesis's spirals can meet below the resolution of doubles (§11.6).
+// thesis's spirals can meet below the resolution of doubles
+// (docs/algorithm/nosteiner2d.md "Known limits").
 //
 // Edge welding (Fig. 5.11): for E = V -> U with first spoke N = VY of V's
 // wedge and last spoke M = UX of U's wedge, if angle(N, E) <= angle(M, E)

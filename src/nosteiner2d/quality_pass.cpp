@@ -1,7 +1,8 @@
-// Quality post-pass (quality_pass.hpp; docs/ALGORITHM.md §11.12): flips,
-// removals and moves of Steiner vertices at the worst triangle, each accepted
-// only when exact orient2d keeps every triangle it makes strictly
-// counter-clockwise and the smallest angle it makes is above the worst one's.
+// Quality post-pass (quality_pass.hpp; docs/algorithm/nosteiner2d.md "Fallbacks
+// and the CDT comparison"): flips, removals and moves of Steiner vertices at
+// the worst triangle, each accepted only when exact orient2d keeps every
+// triangle it makes strictly counter-clockwise and the smallest angle it makes
+// is above the worst one's.
 #include "nosteiner2d/quality_pass.hpp"
 
 #include <algorithm>

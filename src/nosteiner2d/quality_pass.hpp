@@ -1,9 +1,10 @@
 #pragma once
 // A quality post-pass on a triangulation without boundary Steiner points (a
-// deviation beyond the thesis, docs/ALGORITHM.md §11.12): the thesis bounds the
-// min angle of its construction by a constant times g(P) (ch. 5), but the
-// constant is small, and the placement of its points (Q^c wedges, flat
-// Q-to-R boxes) leaves angles far below what the same domain allows.
+// deviation beyond the thesis, docs/algorithm/nosteiner2d.md "Fallbacks and the
+// CDT comparison"): the thesis bounds the min angle of its construction by a
+// constant times g(P) (ch. 5), but the constant is small, and the placement of
+// its points (Q^c wedges, flat Q-to-R boxes) leaves angles far below what the
+// same domain allows.
 //
 // The pass repeatedly takes the triangle with the smallest angle and applies
 // the one local change that raises the smallest angle of the triangles it

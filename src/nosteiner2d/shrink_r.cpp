@@ -96,9 +96,10 @@ PolygonR shrink_q_to_r(const std::vector<std::vector<Vec2>>& q_loops) {
         const Vec2 b = next - v, a = prev - v;
         double t = std::atan2(cross(b, a), dot(b, a));  // interior angle, ccw from b to a
         if (t <= 0) t += 2 * std::numbers::pi;
-        // Deviation (docs/ALGORITHM.md §11.8): the ray makes at least the
-        // angle atan(1/1.8) ~ 29 deg with its side (the thesis's pi/4 from the
-        // bisector gives t/2 - pi/4, down to pi/8 = 22.5 deg).
+        // Deviation (docs/algorithm/nosteiner2d.md "Delta and the shrink to
+        // R"): the ray makes at least the angle atan(1/1.8) ~ 29 deg with its
+        // side (the thesis's pi/4 from the bisector gives t/2 - pi/4, down to
+        // pi/8 = 22.5 deg).
         const double beta = std::max(t / 2 - std::numbers::pi / 4, kMinRayAngle);
         const double lb = std::hypot(b.x, b.y);
         const Vec2 ub{b.x / lb, b.y / lb};

@@ -1,5 +1,6 @@
 // The spoke floor (spoke_floor.hpp): a practical deviation from the thesis's
-// smallest spirals, documented in docs/ALGORITHM.md §11.7.
+// smallest spirals, documented in docs/algorithm/nosteiner2d.md "Welding and
+// the polygon Q".
 //
 // Why the floored part stays empty: a floored spoke has length
 // kSpokeFloorFraction * delta_P(V) < delta_P(V); a wedge triangle between two

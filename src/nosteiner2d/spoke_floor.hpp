@@ -1,10 +1,10 @@
 #pragma once
-// Practical deviation from thesis §5.1.1 (docs/ALGORITHM.md §11.7, "spoke
+// Practical deviation from thesis §5.1.1 (docs/algorithm/nosteiner2d.md "Spoke
 // floor"): the spokes of a welded vertex wedge are never shorter than a fixed
 // fraction of delta_P(V), the distance from V to the closest face of dP not
 // containing V. The thesis's smallest spirals shrink geometrically and, with
 // strong interference on both sides of a corner, meet below the resolution of
-// doubles (§11.6); the floor keeps every spoke end (and hence Q and R)
+// doubles (docs/algorithm/nosteiner2d.md "Known limits"); the floor keeps every spoke end (and hence Q and R)
 // representable.
 #include "pqmesh/nosteiner.hpp"
 
@@ -24,7 +24,7 @@ inline constexpr double kSpokeFloorFraction = 1.0 / 16;
 // closer to 1, so the wedge's min angle does not decrease (up to rounding).
 // Returns the number of spokes raised. The first and last spokes keep their
 // angles (the edge welding of Fig. 5.11 reads them). After a re-spacing
-// thirds_first no longer indexes Fig. 5.10's spokes and is set to -1.
+// thirds_first would not index Fig. 5.10's spokes and is set to -1.
 int floor_spokes(VertexWedge& w, double log_floor);
 
 }  // namespace pqmesh::detail

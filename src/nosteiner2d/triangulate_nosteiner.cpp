@@ -1,5 +1,6 @@
 // Thesis ch. 5 assembled: Q^c + (dQ to dR) + the mesh of R, with the
-// documented fallbacks (include/pqmesh/nosteiner.hpp, docs/ALGORITHM.md §11.10).
+// documented fallbacks (include/pqmesh/nosteiner.hpp,
+// docs/algorithm/nosteiner2d.md "Matching R to Q").
 //
 // Invariant of every path: the vertices on dP are exactly the input vertices
 // (ids 0..n-1 of the output, in input order). Full: Q^c keeps the input
@@ -103,12 +104,13 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
   std::optional<PolygonQ> q;
   t = Clock::now();
   try {
-    // Q needs interference through the far end (SteinerFreeOptions, §11.7).
+    // Q needs interference through the far end (SteinerFreeOptions;
+    // docs/algorithm/nosteiner2d.md "Welding and the polygon Q").
     PolygonQ built = polygon_q(domain, steiner_free_bound(domain, {.sides_at_far_end = true}));
     if (built.representable)
       q = std::move(built);
     else
-      reason = "Q not representable in doubles (spiral depth, docs/ALGORITHM.md 11.6)";
+      reason = "Q not representable in doubles (spiral depth, docs/algorithm/nosteiner2d.md \"Known limits\")";
   } catch (const std::exception& ex) {
     reason = std::string("Q failed: ") + ex.what();
   }
@@ -128,7 +130,7 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
       if (!r.valid)
         reason = "R invalid: " + r.failure;
       else if (!r.representable)
-        reason = "R below double resolution (docs/ALGORITHM.md 11.8)";
+        reason = "R below double resolution (docs/algorithm/nosteiner2d.md \"Delta and the shrink to R\")";
       else
         r_mesh = quad_mesh(polygon_r_domain(r), options.r_mesh);
     } catch (const std::exception& ex) {

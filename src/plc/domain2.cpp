@@ -1,11 +1,12 @@
-// make_domain(Pslg2) and locate(Domain2): a polygon with holes (DESIGN.md §5,
-// thesis §1.4 in 2D). Checks, in order: EmptyDomain, NonFinite,
-// IndexOutOfRange, DegenerateFacet (a segment from a vertex to itself),
-// DuplicateVertex (used vertices), InvalidPolygon (duplicate segments; unused
-// vertices, which Triangle would keep as mesh vertices; vertices not on exactly
-// two segments), SelfIntersectingFacet (segments meeting other than at a shared
-// endpoint), Disconnected (no loop containing all others, or a loop inside a
-// hole), Unsupported (a hole point inside the polygon).
+// make_domain(Pslg2) and locate(Domain2): a polygon with holes
+// (docs/algorithm/input.md "Reading input domains", thesis §1.4 in 2D). Checks,
+// in order: EmptyDomain, NonFinite, IndexOutOfRange, DegenerateFacet (a segment
+// from a vertex to itself), DuplicateVertex (used vertices), InvalidPolygon
+// (duplicate segments; unused vertices, which Triangle would keep as mesh
+// vertices; vertices not on exactly two segments), SelfIntersectingFacet
+// (segments meeting other than at a shared endpoint), Disconnected (no loop
+// containing all others, or a loop inside a hole), Unsupported (a hole point
+// inside the polygon).
 #include <algorithm>
 #include <cmath>
 #include <sstream>

@@ -1,6 +1,7 @@
-// make_domain(Plc3) and locate(Domain3): DESIGN.md §4 item 1, thesis §1.4 and
-// §4.1.6. The stages (validate3.hpp) run in order; each throws DomainError on
-// the first class of violation it finds.
+// make_domain(Plc3) and locate(Domain3): docs/algorithm/input.md "Validation,
+// orientation and shells", thesis §1.4 and §4.1.6. The stages (validate3.hpp)
+// run in order; each throws DomainError on the first class of violation it
+// finds.
 #include <algorithm>
 #include <cmath>
 #include <optional>

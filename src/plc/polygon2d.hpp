@@ -1,7 +1,8 @@
 #pragma once
-// Exact 2D primitives on segments and polygon loops (DESIGN.md §3): every
-// decision is an orient2d / coordinate comparison on the input doubles.
-// Used for the 2D domain and for facets worked in their exact axis projection.
+// Exact 2D primitives on segments and polygon loops (docs/DESIGN_RULES.md
+// "Exact decisions"): every decision is an orient2d / coordinate comparison on
+// the input doubles. Used for the 2D domain and for facets worked in their
+// exact axis projection.
 #include <array>
 #include <optional>
 #include <utility>

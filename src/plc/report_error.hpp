@@ -1,6 +1,7 @@
 #pragma once
-// Building DomainError exceptions for validation failures (DESIGN.md §3: bad
-// input names the offending ids in the file's numbering and the file line).
+// Building DomainError exceptions for validation failures (docs/DESIGN_RULES.md
+// "Bad input and errors": bad input names the offending ids in the file's
+// numbering and the file line).
 #include <cstdint>
 #include <string>
 #include <vector>

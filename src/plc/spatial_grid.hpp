@@ -1,17 +1,17 @@
 #pragma once
-// A uniform grid over triangles (DESIGN.md §8: flat arrays). A triangle is
-// listed in every cell of its bounding-box range that it may touch: a
-// separating-axis test (the 9 edge-cross-axis directions and the normal,
-// evaluated in double with a generous slack, against the cell inflated by a
-// margin) drops cells that are clearly apart, which keeps long diagonal
-// slivers (fan triangulations of big facets) from filling whole rectangles.
-// The filter is conservative: a point x of a triangle lies in the inflated
-// box of the cell cell_index(x), so two triangles with a common point share
-// that cell, a point on a triangle finds it in its own cell, and a ray along
-// a row of cells finds every triangle it meets. Cell indices are monotone in
-// the coordinates (floating-point subtraction and multiplication by a
-// positive constant are monotone). The grid only prunes; every decision is
-// made by exact predicates.
+// A uniform grid over triangles (docs/DESIGN_RULES.md "Data layout and speed":
+// flat arrays). A triangle is listed in every cell of its bounding-box range
+// that it may touch: a separating-axis test (the 9 edge-cross-axis directions
+// and the normal, evaluated in double with a generous slack, against the cell
+// inflated by a margin) drops cells that are clearly apart, which keeps long
+// diagonal slivers (fan triangulations of big facets) from filling whole
+// rectangles. The filter is conservative: a point x of a triangle lies in the
+// inflated box of the cell cell_index(x), so two triangles with a common point
+// share that cell, a point on a triangle finds it in its own cell, and a ray
+// along a row of cells finds every triangle it meets. Cell indices are monotone
+// in the coordinates (floating-point subtraction and multiplication by a
+// positive constant are monotone). The grid only prunes; every decision is made
+// by exact predicates.
 #include <algorithm>
 #include <array>
 #include <vector>

@@ -1,8 +1,9 @@
 #pragma once
-// The stages of 3D domain validation (make_domain(Plc3), DESIGN.md §4 item 1,
-// thesis §1.4). Each stage throws a DomainError for the first class of
-// violation it finds, naming the offending ids; later stages rely on the
-// earlier ones having passed.
+// The stages of 3D domain validation (make_domain(Plc3),
+// docs/algorithm/input.md "Validation, orientation and shells", thesis §1.4).
+// Each stage throws a DomainError for the first class of violation it finds,
+// naming the offending ids; later stages rely on the earlier ones having
+// passed.
 #include <vector>
 
 #include "plc/edge_topology.hpp"

@@ -1,7 +1,8 @@
 // Stage 8 of 3D validation: facets meet only in shared edges and vertices
-// (thesis §1.4; DESIGN.md §4 item 1). Facets are triangulated without new
-// vertices and candidate triangle pairs come from a uniform grid; every
-// decision is an exact predicate (intersect_triangles.hpp).
+// (thesis §1.4; docs/algorithm/input.md "Validation, orientation and shells").
+// Facets are triangulated without new vertices and candidate triangle pairs
+// come from a uniform grid; every decision is an exact predicate
+// (intersect_triangles.hpp).
 #include <algorithm>
 #include <sstream>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Exact geometric predicates (DESIGN.md §3).
+// Exact geometric predicates (docs/DESIGN_RULES.md "Exact decisions").
 //
 // Every predicate returns the exact sign of a polynomial in the input
 // coordinates, which are taken as the exact binary values of the doubles.
@@ -15,7 +15,8 @@
 //
 // Tie-break: the predicates report Zero honestly. A caller that must decide a
 // degenerate case does so by a symbolic perturbation documented at the call
-// site (docs/ALGORITHM.md lists them), never by a tolerance.
+// site (docs/algorithm/predicates.md "Where ties are broken" lists them), never
+// by a tolerance.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -221,8 +222,9 @@ inline double next_down(double x) { return -next_up(-x); }
 // a slanted input segment cannot, in general, store it exactly (the exact
 // point has no double coordinates); it stores a rounding of it, and this is
 // the rule by which the checker (src/mesh) accepts it as lying on the
-// segment (docs/ALGORITHM.md §5). Exact: a separating-axis test with the two
-// box axes and the segment's normal, the latter by orient2d on the corners.
+// segment (docs/algorithm/quality.md "The validity checker"). Exact: a
+// separating-axis test with the two box axes and the segment's normal, the
+// latter by orient2d on the corners.
 inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi);
 
 inline bool within_ulp_of_segment(Vec2 p, Vec2 a, Vec2 b) {
@@ -245,8 +247,8 @@ inline bool segment_meets_rect(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
 }
 
 // The 3D forms of the same rule, for Steiner points on slanted input edges and
-// facets (docs/ALGORITHM.md §5). The ulp box of p is
-// [pred(p.x), succ(p.x)] x [pred(p.y), succ(p.y)] x [pred(p.z), succ(p.z)].
+// facets (docs/algorithm/quality.md "The validity checker"). The ulp box of p
+// is [pred(p.x), succ(p.x)] x [pred(p.y), succ(p.y)] x [pred(p.z), succ(p.z)].
 //
 // within_ulp_of_segment(p, a, b): the closed segment ab meets p's ulp box.
 // Exact separating-axis test: the three box axes (interval overlap) and the

@@ -112,7 +112,8 @@ struct SquareComponents {
 // All P edges meeting the closed (shifted) square, as loop edges in loop order.
 std::vector<LoopEdge> edges_meeting(const Domain2& domain, const Square& square);
 // The same, restricted to a candidate list (e.g. the parent square's list; a
-// child square's edges are a subset of its parent's, DESIGN.md §8).
+// child square's edges are a subset of its parent's, docs/DESIGN_RULES.md "Data
+// layout and speed").
 std::vector<LoopEdge> edges_meeting(const Domain2& domain, const Square& square,
                                     std::span<const LoopEdge> candidates);
 

@@ -230,7 +230,8 @@ class PointGenerator {
   }
 
   // p is closer to input vertex v than Lemma 1's clearance (a construction
-  // compared with a threshold: either outcome is valid, docs/ALGORITHM.md §8.5).
+  // compared with a threshold: either outcome is valid,
+  // docs/algorithm/quad2d.md "Mesh vertices and warping").
   bool too_close(Vec2 p, int v) const {
     const Vec2 q = vertex(v);
     const double c = b_.vertex_clearance(v);
@@ -267,13 +268,13 @@ class PointGenerator {
   // same facts the sorted runs of corner_phase give. Only the grid lines that
   // hold a leaf corner get a row or column of the table (row_slot_ and
   // col_slot_ number them in increasing order, -1 for the others): a point on
-  // any other line is no corner. On the plate of docs/ALGORITHM.md §8.11 that
-  // is about 1,000 of 8,192 lines each way, a table of ~1 MB instead of 64 MiB
-  // of address space of which the used rows and the scans of find_crossings
-  // touched ~3,500 pages. The distinct corners are the non-zero bytes: the
-  // table itself answers find_crossings' questions (grid_corners_around), and
-  // scanning the rows and columns in increasing order places the corners in
-  // (x, y) order, as corner_phase does.
+  // any other line is no corner. On the plate of docs/algorithm/quad2d.md
+  // "Speed and memory" that is about 1,000 of 8,192 lines each way, a table of
+  // ~1 MB instead of 64 MiB of address space of which the used rows and the
+  // scans of find_crossings touched ~3,500 pages. The distinct corners are the
+  // non-zero bytes: the table itself answers find_crossings' questions
+  // (grid_corners_around), and scanning the rows and columns in increasing
+  // order places the corners in (x, y) order, as corner_phase does.
   static constexpr int kMaxDirectBits = 26;
   void direct_corner_phase() {
     const std::size_t rows = std::size_t{1} << grid_.xbits, cols = std::size_t{1} << grid_.ybits;
@@ -433,7 +434,8 @@ class PointGenerator {
     place_corners(corners, codec);
   }
 
-  // Corners: warp, keep, or drop (docs/ALGORITHM.md §8.5).
+  // Corners: warp, keep, or drop (docs/algorithm/quad2d.md "Mesh vertices and
+  // warping").
   template <class Codec>
   void place_corners(std::vector<typename Codec::Key>& corners, const Codec& codec) {
     std::vector<int> segs;
@@ -480,10 +482,10 @@ class PointGenerator {
     std::sort(segs.begin(), segs.end());
     segs.erase(std::unique(segs.begin(), segs.end()), segs.end());
     // Warping radius: a quarter of the largest box at c, but at most a third of
-    // the smallest (docs/ALGORITHM.md §8.5). Two corners one grid step h apart
-    // are both warped onto an edge only if it makes an angle phi with their
-    // side where h cos(phi) < 2r, and their images are h sin(phi) apart: with
-    // r <= h/3 that is more than 0.74 h.
+    // the smallest (docs/algorithm/quad2d.md "Mesh vertices and warping"). Two
+    // corners one grid step h apart are both warped onto an edge only if it
+    // makes an angle phi with their side where h cos(phi) < 2r, and their
+    // images are h sin(phi) apart: with r <= h/3 that is more than 0.74 h.
     const double r = std::min(h_max / 4, h / 3), r2 = r * r;
     bool warped = false;
     for (const int s : segs) {
@@ -510,12 +512,13 @@ class PointGenerator {
 
   bool snapped(Vec2 c, int segment) const { return std::binary_search(snaps_.begin(), snaps_.end(), Snap{c.x, c.y, segment}); }
 
-  // Crossings of input edges with leaf sides (docs/ALGORITHM.md §8.5), each
-  // with the two corners around it on its side. Warping (thesis §4.3 in 2D):
-  // the corner nearer to the crossing is moved onto the edge, and the crossing
-  // itself is then not kept (the warped corner stands for it). A crossing
-  // exactly in the middle of its side, or whose nearer corner must stay clear
-  // of an input vertex (Lemma 1), is kept as a vertex instead.
+  // Crossings of input edges with leaf sides (docs/algorithm/quad2d.md "Mesh
+  // vertices and warping"), each with the two corners around it on its side.
+  // Warping (thesis §4.3 in 2D): the corner nearer to the crossing is moved
+  // onto the edge, and the crossing itself is then not kept (the warped corner
+  // stands for it). A crossing exactly in the middle of its side, or whose
+  // nearer corner must stay clear of an input vertex (Lemma 1), is kept as a
+  // vertex instead.
   void find_crossings() {
     // A segment crosses the boundary of a box at most twice (both convex).
     std::size_t pairs = 0;
@@ -664,7 +667,8 @@ class PointGenerator {
         ++count;
       }
       if (vertex_id >= 0 && !on_loop[static_cast<std::size_t>(vertex_id)]) vertex_id = -2;  // isolated input vertex
-      if (vertex_id == -2 && count == 1) {  // isolated vertices are not meshed (docs/ALGORITHM.md §8.5)
+      // Isolated vertices are not meshed (docs/algorithm/quad2d.md "Mesh vertices and warping").
+      if (vertex_id == -2 && count == 1) {
         i = j;
         continue;
       }

@@ -1,6 +1,7 @@
 #pragma once
 // The vertices of the 2D mesh, taken from the finished quadtree (thesis §4.3
-// "Warping" and §4.4 in two dimensions; docs/ALGORITHM.md §8.5-8.6):
+// "Warping" and §4.4 in two dimensions; docs/algorithm/quad2d.md "Mesh vertices
+// and warping", "Triangulating the boxes"):
 //   * the input vertices;
 //   * every leaf corner of a component that is far from ∂P and inside P;
 //   * warping: a corner closer than h/4 to an input edge (h: the smallest leaf

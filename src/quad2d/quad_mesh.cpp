@@ -1,5 +1,5 @@
 // The 2D quadtree mesher's driver: quadtree phases, mesh vertices, then the
-// triangulation of the boxes (docs/ALGORITHM.md §8).
+// triangulation of the boxes (docs/algorithm/quad2d.md).
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -110,8 +110,9 @@ cdt2d::RefineOptions refine_options(const QuadMeshOptions& options, std::size_t 
 }
 
 // The constrained Delaunay triangulation of the points, refined when asked
-// (docs/ALGORITHM.md §8.6, §8.10). Fills the mesh's vertices, triangles and
-// boundary pieces; piece_segment gives each piece's input segment.
+// (docs/algorithm/quad2d.md "Triangulating the boxes", "Delaunay refinement
+// pass"). Fills the mesh's vertices, triangles and boundary pieces;
+// piece_segment gives each piece's input segment.
 void triangulate(const Domain2& domain, cdt2d::CdtInput in, const std::vector<int>& constraint_segment,
                  const QuadMeshOptions& options, QuadMeshStats& stats, TriMesh2& mesh,
                  std::vector<int>& piece_segment) {

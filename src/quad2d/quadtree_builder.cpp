@@ -1,5 +1,5 @@
 // The quadtree phases of the 2D mesher; see quadtree_builder.hpp and
-// docs/ALGORITHM.md §8.
+// docs/algorithm/quad2d.md.
 #include "quad2d/quadtree_builder.hpp"
 
 #include <algorithm>
@@ -236,16 +236,16 @@ bool QuadtreeBuilder::vertex_crowded(std::int32_t node) const {
 //   * e' shares no vertex with e and lies in P ∧ ex(b) (the thesis' rule);
 //   * e' shares the vertex v with e and meets the closed square of b itself
 //     outside the open protected box of v.
-// The second rule is our deviation (docs/ALGORITHM.md §8.3): the thesis
-// measures it in ex(b) minus the protected boxes, which splits the boxes next
-// to a vertex box down to about 1/8 of the distance between e and e' there
-// (for a right angle: boxes 1/16 of the vertex box), and the triangles that
-// join those small boxes to the vertex are needlessly thin. Measured in b, the
+// The second rule is our deviation (docs/algorithm/quad2d.md "What the tree
+// guarantees"): the thesis measures it in ex(b) minus the protected boxes, which
+// splits the boxes next to a vertex box down to about 1/8 of the distance between e
+// and e' there (for a right angle: boxes 1/16 of the vertex box), and the triangles
+// that join those small boxes to the vertex are needlessly thin. Measured in b, the
 // boxes along e at distance rho from v end at a size proportional to rho sin(theta)
-// (theta the angle between e and e'), which is the grading the angle needs
-// and still a constant times alpha times the vertex box (Lemma 2-5's form).
-// The faces of P ∧ ex(b) come from the whole extended box, which can only add
-// faces (more splitting, never less).
+// (theta the angle between e and e'), which is the grading the angle needs and
+// still a constant times alpha times the vertex box (Lemma 2-5's form). The faces
+// of P ∧ ex(b) come from the whole extended box, which can only add faces (more
+// splitting, never less).
 bool QuadtreeBuilder::edge_crowded(std::int32_t node) const {
   if (tree_.is_protected(node)) return false;
   const NodeData& d = data(node);
@@ -328,8 +328,8 @@ void QuadtreeBuilder::run_phase(Phase phase, bool (QuadtreeBuilder::*crowded)(st
 // the vertex, so that the vertex is at least h(b)/2 from the sides of the united
 // box B (Lemma 1). We record B as the vertex's protected box and protect the
 // leaves of the vertex's component inside it instead of uniting them in the
-// tree (docs/ALGORITHM.md §8 says why); the mesh sees the united box: no grid
-// corner strictly inside B becomes a mesh vertex.
+// tree (docs/algorithm/quad2d.md says why); the mesh sees the united box: no
+// grid corner strictly inside B becomes a mesh vertex.
 void QuadtreeBuilder::center_vertices() {
   const auto& pv = domain_.pslg.vertices;
   std::vector<std::int32_t> vertex_leaf(pv.size(), -1);
@@ -367,8 +367,9 @@ void QuadtreeBuilder::center_vertices() {
   // leaf holding the vertex, is protected; the other three may be split by the
   // balance condition (their descendants keep the mark), which grades the
   // united box towards small outside neighbours instead of leaving one large
-  // box with a finely divided boundary (docs/ALGORITHM.md §8.2). The mesh still
-  // sees Lemma 1: no mesh vertex within h(b)/2 of the vertex (mesh_points.cpp).
+  // box with a finely divided boundary (docs/algorithm/quad2d.md "Phases"). The
+  // mesh still sees Lemma 1: no mesh vertex within h(b)/2 of the vertex
+  // (mesh_points.cpp).
   std::vector<std::int32_t> found;
   for (std::size_t v = 0; v < pv.size(); ++v) {
     const std::int32_t b = vertex_leaf[v];

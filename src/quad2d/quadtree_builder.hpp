@@ -8,7 +8,7 @@
 // its P faces. A cube meeting P in k > 1 components has k nodes, one per
 // component (duplicates); a cube missing P is a leaf without a component.
 //
-// Phases (docs/ALGORITHM.md §8 walks them with the thesis sections):
+// Phases (docs/algorithm/quad2d.md walks them with the thesis sections):
 //   0. size:      split while the side exceeds the user size function (§1.1);
 //   1. vertex:    split vertex-crowded boxes (§4.1.3);
 //   2. centering: split the larger balance-adjacent boxes of every vertex box,

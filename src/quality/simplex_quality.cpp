@@ -1,4 +1,5 @@
-// Shape measures of one triangle or tetrahedron (thesis ch. 3; DESIGN.md §6).
+// Shape measures of one triangle or tetrahedron (thesis ch. 3;
+// docs/algorithm/quality.md "Quality measures").
 //
 // Everything here is a construction in double except the few yes/no questions
 // whose answer changes WHICH formula applies (is the simplex degenerate, is a

@@ -26,10 +26,11 @@ namespace pqmesh {
 // Containment test for the face-circumcircle candidate balls of the minimal
 // enclosing ball search. It compares a constructed centre and radius with a
 // relative slack of kBallSlack on squared lengths. That is a tolerance, which
-// DESIGN.md §3 forbids in decisions; it is acceptable HERE because the result
-// is only a measurement: accepting a ball that misses a vertex by the slack
-// understates R_enc by at most ~kBallSlack/2 relative, and rejecting the true
-// minimal ball because of rounding would overstate it by a whole candidate.
+// docs/DESIGN_RULES.md "Exact decisions" forbids in decisions; it is acceptable
+// HERE because the result is only a measurement: accepting a ball that misses a
+// vertex by the slack understates R_enc by at most ~kBallSlack/2 relative, and
+// rejecting the true minimal ball because of rounding would overstate it by a
+// whole candidate.
 inline constexpr double kBallSlack = 1e-10;
 
 inline bool face_ball_contains(Vec3 centre, double radius2, Vec3 p) {

@@ -102,7 +102,8 @@ bool BoxAssembler::on_facet(int id, const FacetPlane& plane) const {
 // on the side of the right-hand normal of (a, b, c)). Exact orient3d on the
 // final (rounded or warped) coordinates must agree; a flat or inverted
 // tetrahedron is a bug (or a warp that bent a face past the apex) and
-// throws naming the leaf, never flipped (ALGORITHM.md §12.2, rule 3).
+// throws naming the leaf, never flipped (docs/algorithm/tet3d_boxes.md "Vertex
+// identities", rule 3).
 void BoxAssembler::tet(std::int32_t leaf, const char* what, int a, int b, int c, int d) {
   const Sign s = orient3d(book_.point(a), book_.point(b), book_.point(c), book_.point(d));
   if (s != Sign::Positive && warps_ != nullptr && collect_) {

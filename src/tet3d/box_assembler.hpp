@@ -11,7 +11,8 @@
 //   edge_box_fans.cpp   edge boxes with flat cones: F ∩ b, G ∩ b fanned
 //   vertex_box.cpp      united vertex boxes (§4.5.2)
 //   two_facet_box.cpp   two-facet boxes (§4.5.5)
-// The constructions are stated in facet_boxes.hpp and docs/ALGORITHM.md §12.
+// The constructions are stated in facet_boxes.hpp and
+// docs/algorithm/tet3d_boxes.md.
 #include <array>
 #include <cstdint>
 #include <initializer_list>

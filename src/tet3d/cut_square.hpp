@@ -11,9 +11,10 @@
 //     crossings x, y of F with the two ring segments that change side (or the
 //     ring points on F), and the chord x-y bound the convex polygon π;
 //     C1: m = midpoint of x, y within h/4 of the square centre c (a
-//         constructed distance, a floating-point threshold as in §8.5 of
-//         ALGORITHM.md: either outcome is valid) -> m joined to every side of
-//         π except the two chord halves;
+//         constructed distance, a floating-point threshold as in
+//         docs/algorithm/quad2d.md "Mesh vertices and warping": either
+//         outcome is valid) -> m joined to every side of π except the two
+//         chord halves;
 //     C2: otherwise. c on P's side: c joined to every side of π (chord
 //         included). c beyond F: each side p q of π's walk from y to x with
 //         the segments c-p, c-q clipped at the chord gives a quadrilateral

@@ -292,7 +292,8 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       axis_ref(p, s.u) = bracket(s.u);
       axis_ref(p, s.v) = bracket(s.v);
       if (!within_ulp_of_segment(p, ea, eb)) throw InternalError(where + ": edge crossing not within an ulp of the edge");
-      // After the first warping pass, E crosses the tilted square (§12.5).
+      // After the first warping pass, E crosses the tilted square
+      // (docs/algorithm/tet3d_warp.md).
       if (const auto w = warped_square_crossing(ea, eb, s, tree, warps)) return *w;
       return p;
     });

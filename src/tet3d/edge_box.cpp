@@ -53,7 +53,7 @@ void BoxAssembler::edge_box(std::int32_t leaf, int edge) {
 
 // An edge box whose apex v on E sees every face triangle, but some of its
 // cones are flat (worst tet_shape `single` above kFlatCone): the best of
-// two constructions of ours (docs/ALGORITHM.md §12.5), taken only if its
+// two constructions of ours (docs/algorithm/tet3d_warp.md), taken only if its
 // worst tet_shape is strictly better than `single`, the two-point
 // construction on ties. Both make only tetrahedra that are positive by
 // exact orient3d, so the rebuild loop never reacts to them; floats only
@@ -73,7 +73,7 @@ bool BoxAssembler::flat_edge_box(std::int32_t leaf, int edge, const std::vector<
 }
 
 // An edge box whose apex v on E does not see every face triangle (exact
-// orient3d; our construction, docs/ALGORITHM.md §12.5 "two cone points"):
+// orient3d; our construction, docs/algorithm/tet3d_warp.md "Two cone points"):
 // a warp pushed part of a face into the box past every point of E (suite
 // seed 67: a face shared with smaller edge boxes of the same E, which E
 // crosses just above their boundary; §4.3's first pass moves its lower
@@ -112,17 +112,17 @@ bool BoxAssembler::two_apex_box(std::int32_t leaf, const std::vector<Tri>& tris,
   return true;
 }
 
-// Flat cones from v, first construction (docs/ALGORITHM.md §12.5 "flat
-// cones from two points"): E runs within a few thousandths of h of a box
-// face (or a face warped towards it), so v, on E, lies almost in that
-// face's plane (bounded seed 167: apex 0.00015 h from the face triangle
-// through E's own crossing; seed 172: 0.00026 h from a face frozen on the
-// grid). The same two-point construction as two_apex_box, with the far set
-// S' seeded by the k face triangles with the worst cones from v (k = 1 ..
-// all, ties in triangle order) and grown until every rim tetrahedron is
-// positive; among every seed and every w, the best worst tet_shape over
-// the box (the first on ties; +infinity when none is valid). Not recorded
-// in two_apex_points() (that list decides mesh_boxes' second run).
+// Flat cones from v, first construction (docs/algorithm/tet3d_warp.md "Flat
+// cones from two points"): E runs within a few thousandths of h of a box face
+// (or a face warped towards it), so v, on E, lies almost in that face's plane
+// (bounded seed 167: apex 0.00015 h from the face triangle through E's own
+// crossing; seed 172: 0.00026 h from a face frozen on the grid). The same
+// two-point construction as two_apex_box, with the far set S' seeded by the k
+// face triangles with the worst cones from v (k = 1 .. all, ties in triangle
+// order) and grown until every rim tetrahedron is positive; among every seed
+// and every w, the best worst tet_shape over the box (the first on ties;
+// +infinity when none is valid). Not recorded in two_apex_points() (that list
+// decides mesh_boxes' second run).
 BoxAssembler::TwoApex BoxAssembler::flat_two_apex(std::int32_t leaf, const std::vector<Tri>& tris, int v) {
   const Vec3 V = book_.point(v);
   std::vector<std::pair<double, std::size_t>> order;
@@ -231,7 +231,7 @@ Vec3 BoxAssembler::apex_on_edge(const std::vector<Tri>& tris, Vec3 a, Vec3 b, co
   Vec3 best = round_onto_segment(a, b, mid);
   double best_shape = worst(best);
   // A midpoint with a non-positive cone is kept: the warp that caused it
-  // is found and frozen by the rebuild loop (mesh_boxes), as before.
+  // is found and frozen by the rebuild loop (mesh_boxes).
   if (best_shape == std::numeric_limits<double>::infinity()) return best;
   bool moved = false;
   for (const double t : {0.25, 0.375, 0.625, 0.75}) {

@@ -1,6 +1,6 @@
 // Edge boxes with flat cones from the apex on E: F ∩ b and G ∩ b fanned
 // from points of their own facets (thesis §4.5.3 with §4.5.4's fan; ours,
-// docs/ALGORITHM.md §12.5 "Facet fans in flat edge boxes").
+// docs/algorithm/tet3d_warp.md "Facet fans in flat edge boxes").
 //
 // Why: when the apex v on E lies within a few thousandths of h of a box
 // face that carries a chord (a, b) of F, one of E's facets, every

@@ -2,8 +2,9 @@
 // Points constructed on a P edge (thesis §4.5.3: the central vertex of an edge
 // box is the midpoint of E ∩ I(b)). As for points on facets (facet_plane.hpp),
 // the exact point has in general no double coordinates; it is stored as a
-// double point p with within_ulp_of_segment(p, a, b) (ALGORITHM.md §12.2
-// "Exactness"), the rule by which the checker accepts it on E.
+// double point p with within_ulp_of_segment(p, a, b)
+// (docs/algorithm/tet3d_boxes.md "Exactness"), the rule by which the checker
+// accepts it on E.
 #include <utility>
 
 #include "pqmesh/vec.hpp"

@@ -81,8 +81,9 @@ struct PassNotes {
 // One run of the warped (or unwarped) box meshing; `two_apex` allows the
 // two-cone-point edge boxes.
 BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                        std::span<const BoxJob> jobs, const BoxMeshOptions& options, bool two_apex, PassNotes& notes) {
-  const BoxPass pass{tree, corners, domain, jobs, two_apex, options.facet_fans};
+                        std::span<const BoxJob> jobs, const BoxMeshOptions& options,
+                        const detail::BoxMeshTestHooks& hooks, bool two_apex, PassNotes& notes) {
+  const BoxPass pass{tree, corners, domain, jobs, two_apex, hooks.facet_fans};
   WarpTable warps;
   std::int64_t rebuilds = 0, worst_box_rounds = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
@@ -92,7 +93,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   std::unique_ptr<BoxAssembler> done;
   if (options.warp) {
     warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), nullptr,
-                              options.reflex_copies);
+                              hooks.reflex_copies);
     release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
@@ -152,18 +153,18 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       const std::vector<std::int32_t> inverted = trial->bad_jobs();
       trial.reset();
       if (!candidates) candidates = warp_candidates(tree, corners, domain, jobs);
-      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates, &frozen, options.reflex_copies, edge_boxes,
+      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates, &frozen, hooks.reflex_copies, edge_boxes,
                                          &second_only);
-      if (options.partial_trials) {
+      if (hooks.partial_trials) {
         if (!job_boxes) job_boxes.emplace(tree, jobs);
         scope = job_boxes->touching(changed_points(warps, next), inverted);
       }
       warps = std::move(next);
-      full = !options.partial_trials;
+      full = !hooks.partial_trials;
       if (full) candidates.reset();
       release_free_heap();
     }
-    // One decision per shared face (docs/ALGORITHM.md §12.5): a reported
+    // One decision per shared face (docs/algorithm/tet3d_warp.md): a reported
     // point keeps only the part of its second pass within the reporting
     // box's faces, which leaves a face near a P edge unwarped. Its move out of
     // the reporting box (away from that box's apex) helps that box but bends
@@ -182,7 +183,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       done.reset();
       release_free_heap();
       WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
-                                          options.reflex_copies, edge_boxes, &second_only, true);
+                                          hooks.reflex_copies, edge_boxes, &second_only, true);
       release_free_heap();
       if (wider.out_of_face > 0) {
         std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
@@ -202,8 +203,8 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // the freeze holds by construction.
     for (const GridPoint& g : frozen) notes.held.insert(g);
     for (const auto& [g, axes] : second_only) notes.held.insert(g);
-    if (options.freeze_worst_box) {
-      const WarpRecipe recipe{options.reflex_copies, edge_boxes, &second_only, wider_won};
+    if (hooks.freeze_worst_box) {
+      const WarpRecipe recipe{hooks.reflex_copies, edge_boxes, &second_only, wider_won};
       const WorstBoxFreeze freeze = freeze_worst_boxes(pass, recipe, warps, frozen, done);
       worst_box_rounds = freeze.rounds;
       notes.unfrozen_worst_job = freeze.unfrozen_worst_job;
@@ -212,7 +213,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   if (!done) {
     done = std::make_unique<BoxAssembler>(tree, corners, domain, options.warp ? &warps : nullptr);
     done->allow_two_apex(two_apex);
-    done->allow_facet_fans(options.facet_fans);
+    done->allow_facet_fans(hooks.facet_fans);
     run_jobs(*done, tree, jobs);
     notes.wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }
@@ -270,29 +271,28 @@ bool job_touches(const BoxMesh& m, std::int32_t job, const std::unordered_set<Gr
 
 }  // namespace
 
-// Two-cone-point edge boxes (BoxAssembler::two_apex_box, docs/ALGORITHM.md
-// §12.5) keep an edge box valid where the single apex on E inverts, so the
-// rebuild loop does not freeze the warp that caused it; but the warp left in
-// place can make another box worse than the frozen run does (suite seeds 5,
-// 27). So the run without them is made first. Only if the box of that
-// run's worst tetrahedron has a point that the rebuild loop held back
-// (frozen or kept within its box faces) and that is a vertex of a box which
-// had a valid two-point construction in some trial (otherwise a held point
-// of a two-point box did not make the worst box, and the second run costs a
-// whole run for nothing: bounded seed 58 took 2.7x cpu), the run with them is
-// made too, and kept only when its worst tetrahedron (tet_shape, only
-// compared; both meshes are valid by exact orient3d) is strictly better.
-// Otherwise the first run is remade (not kept meanwhile: a mesh is about
-// half the peak memory). Every other run does no extra work and keeps its
-// bytes; no run gets a worse worst tetrahedron. When the worst-box freeze
-// kept a round, the box asked about is the one that was worst before it, so
-// the freeze never adds a run (flat seed 70: the freeze's new worst box
-// holds such a point, and asking about it took the box stage from 14 s to
-// 63 s for a two-point run that lost).
+// Two-cone-point edge boxes (BoxAssembler::two_apex_box,
+// docs/algorithm/tet3d_warp.md) keep an edge box valid where the single apex on
+// E inverts, so the rebuild loop does not freeze the warp that caused it; but
+// the warp left in place can make another box worse than the frozen run does
+// (suite seeds 5, 27). So the run without them is made first. Only if the box
+// of that run's worst tetrahedron has a point that the rebuild loop held back
+// (frozen or kept within its box faces) and that is a vertex of a box which had
+// a valid two-point construction in some trial (otherwise a held point of a
+// two-point box did not make the worst box, and the second run costs a whole
+// run for nothing: bounded seed 58 took 2.7x cpu), the run with them is made
+// too, and kept only when its worst tetrahedron (tet_shape, only compared; both
+// meshes are valid by exact orient3d) is strictly better. Otherwise the first
+// run is remade (not kept meanwhile: a mesh is about half the peak memory).
+// Every other run does no extra work and keeps its bytes; no run gets a worse
+// worst tetrahedron. When the worst-box freeze kept a round, the box asked
+// about is the one that was worst before it, so the freeze never adds a run
+// (flat seed 70: the freeze's new worst box holds such a point, and asking
+// about it took the box stage from 14 s to 63 s for a two-point run that lost).
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
-                   const BoxMeshOptions& options) {
+                   const BoxMeshOptions& options, const detail::BoxMeshTestHooks& hooks) {
   PassNotes notes;
-  BoxMesh single = mesh_boxes_pass(tree, corners, domain, jobs, options, false, notes);
+  BoxMesh single = mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, false, notes);
   if (notes.wanted.empty() || single.mesh.tetrahedra.empty()) return single;
   const auto [single_worst, worst_tet] = worst_tet_shape(single);
   const std::int32_t worst_job = notes.unfrozen_worst_job >= 0 ? notes.unfrozen_worst_job : single.tet_job[worst_tet];
@@ -300,11 +300,11 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   single = BoxMesh{};
   notes = PassNotes{};
   release_free_heap();
-  BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, true, notes);
+  BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, true, notes);
   if (worst_tet_shape(two).first < single_worst) return two;
   two = BoxMesh{};
   release_free_heap();
-  return mesh_boxes_pass(tree, corners, domain, jobs, options, false, notes);
+  return mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, false, notes);
 }
 
 }  // namespace pqmesh::tet3d

@@ -108,30 +108,38 @@ struct BoxMeshOptions {
   // §4.3 warping (both passes) for the box vertices of every kind (warp.hpp;
   // rules and counts there).
   bool warp = false;
-  // Fig. 4.7's copies per facet for box vertices in a reflex edge's slot
-  // (warp.hpp); false: such a vertex stays in place (counted in
-  // warp_reflex_left), the behaviour before they were built (kept for the
-  // comparison in reflex_slot_copies_test.cpp).
-  bool reflex_copies = true;
-  // The rebuild loop's trials after a rebuild run only the jobs the new table
-  // can change (trial_scope.hpp); false: every trial runs every job (the loop
-  // before stop 28, kept for the comparison in rebuild_loop_test.cpp).
-  bool partial_trials = true;
-  // After the rebuild loop, a table whose worst tetrahedron is flat gets the
-  // warps of its worst box frozen while that strictly improves the worst
-  // tetrahedron (worst_box_freeze.hpp); false: the table of the rebuild loop
-  // is kept (the behaviour before stop 29, kept for the comparison in
-  // worst_box_freeze_test.cpp).
-  bool freeze_worst_box = true;
-  // Edge boxes with flat cones from the apex on E may fan F ∩ b and G ∩ b
-  // from points of their own facets (edge_box_fans.cpp); false: only the
-  // two-point construction is tried there (the behaviour before stop 30,
-  // kept for the comparison in flat_cone_two_apex_test.cpp).
-  bool facet_fans = true;
   // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
   // clearances of box vertices outside P, which are no mesh vertices).
   bool keep_warp_table = false;
 };
+
+namespace detail {
+// Switches that turn off one stage of mesh_boxes, for tests only: the
+// production path (tet_mesh) never passes them, so every stage is on. Each
+// exists because a test checks a property that needs the stage off:
+struct BoxMeshTestHooks {
+  // Fig. 4.7's copies per facet for box vertices in a reflex edge's slot
+  // (warp.hpp); false: such a vertex stays in place (counted in
+  // warp_reflex_left), which shows that the test domain puts vertices in
+  // the slot (reflex_slot_copies_test.cpp).
+  bool reflex_copies = true;
+  // The rebuild loop's trials after a rebuild run only the jobs the new table
+  // can change (trial_scope.hpp); false: every trial runs every job. Both
+  // must give the same mesh (rebuild_loop_test.cpp).
+  bool partial_trials = true;
+  // After the rebuild loop, a table whose worst tetrahedron is flat gets the
+  // warps of its worst box frozen while that strictly improves the worst
+  // tetrahedron (worst_box_freeze.hpp); false: the rebuild loop's table is
+  // kept. A run below the threshold must be unchanged by the freeze
+  // (worst_box_freeze_test.cpp).
+  bool freeze_worst_box = true;
+  // Edge boxes with flat cones from the apex on E may fan F ∩ b and G ∩ b
+  // from points of their own facets (edge_box_fans.cpp); false: only the
+  // two-point construction is tried there, so that a test can bound that
+  // construction alone (flat_cone_two_apex_test.cpp).
+  bool facet_fans = true;
+};
+}  // namespace detail
 
 struct BoxMesh {
   TetMesh3 mesh;                       // region attribute 0; no boundary face list
@@ -168,6 +176,6 @@ GridPoint united_lo(const BoxKey<3>& key, std::uint8_t block);
 BoxFaces job_faces(const SquareDispatcher& squares, const BoxJob& job);
 
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
-                   const BoxMeshOptions& options = {});
+                   const BoxMeshOptions& options = {}, const detail::BoxMeshTestHooks& hooks = {});
 
 }  // namespace pqmesh::tet3d

@@ -1,10 +1,12 @@
 #pragma once
-// The plane of a P facet and the points constructed on it (docs/ALGORITHM.md
-// §12.2 "Exactness"). Decisions are exact orient3d signs against three
-// vertices of one outward-oriented facet triangle; constructed points on the
-// plane are rounded to doubles and then moved by single ulps until the plane
-// meets their ulp box (within_ulp_of_plane, predicates.hpp), the 3D analogue
-// of the 2D mesher's rule for points on slanted segments (§5, §8.5).
+// The plane of a P facet and the points constructed on it
+// (docs/algorithm/tet3d_boxes.md "Exactness"). Decisions are exact orient3d
+// signs against three vertices of one outward-oriented facet triangle;
+// constructed points on the plane are rounded to doubles and then moved by
+// single ulps until the plane meets their ulp box (within_ulp_of_plane,
+// predicates.hpp), the 3D analogue of the 2D mesher's rule for points on
+// slanted segments (docs/algorithm/quality.md "The validity checker",
+// docs/algorithm/quad2d.md "Mesh vertices and warping").
 #include <array>
 
 #include "pqmesh/domain.hpp"

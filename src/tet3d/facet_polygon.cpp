@@ -89,7 +89,7 @@ double BoxAssembler::worst_fan(const Chords& chord, Vec3 g, Vec3 apex, bool exac
 // §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean
 // is pulled towards the side with more vertices: on a long thin polygon
 // (F clipping a box edge, one face beside it split into small squares:
-// bounded random seed 58, docs/ALGORITHM.md §12.5) it lies almost on the
+// bounded random seed 58, docs/algorithm/tet3d_warp.md) it lies almost on the
 // line of a chord and that fan tetrahedron is flat (aspect 16,433). So when
 // the worst fan tetrahedron from the mean is worse (tet_shape, compared
 // only) than `bar` (the worst cone of the box: only then is the fan the

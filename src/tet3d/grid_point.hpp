@@ -1,6 +1,7 @@
 #pragma once
-// Points of the octree's integer grid (DESIGN.md §3: "tree boxes live on an
-// integer grid"), the identity of the mesh vertices that the box stage makes.
+// Points of the octree's integer grid (docs/DESIGN_RULES.md "Exact decisions":
+// "tree boxes live on an integer grid"), the identity of the mesh vertices that
+// the box stage makes.
 //
 // A GridPoint is a point with coordinates root_origin + f_a * h(kTreeMaxLevel + 1),
 // f_a integers ("fine units" of tree/key.hpp). Box corners, centres of box

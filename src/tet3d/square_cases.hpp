@@ -41,8 +41,8 @@
 //                                 every two of them meet at v in a reflex
 //                                 crease whose exterior wedge separates their
 //                                 pieces on S; the neighbour cells hold them
-//                                 as separate components, docs/ALGORITHM.md
-//                                 §12.4 "Flat edges");
+//                                 as separate components,
+//                                 docs/algorithm/tet3d_boxes.md "Flat edges");
 //   anything else                 InternalError naming S and M (a P vertex in
 //                                 S, two facets without a common edge, two
 //                                 edges, ...: the octree's separation, §4.1.7,

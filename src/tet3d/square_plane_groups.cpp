@@ -1,6 +1,6 @@
 // Plane groups at a P vertex: the vertex-box dispatch of squares whose facets
 // lie in several planes split into marker patches (square_cases.hpp,
-// docs/ALGORITHM.md §12.4 "Flat edges").
+// docs/algorithm/tet3d_boxes.md "Flat edges").
 #include <algorithm>
 #include <numeric>
 

@@ -62,24 +62,23 @@ void BoxAssembler::two_facet_box(std::int32_t leaf, int edge) {
 }
 
 // The apex of a two-facet box at a convex edge (our choice within §4.5.5,
-// docs/ALGORITHM.md §12.5 Gap (1)): a central point of F ∩ b for one of
-// the two facets F, coned to the face triangles not on F, with the other
-// facet's polygon fanned from its vertex mean (as fan with no bar).
-// The first candidate is `near` (the facet whose plane is nearer the box
+// docs/algorithm/tet3d_warp.md "Apexes close to a box face"): a central point
+// of F ∩ b for one of the two facets F, coned to the face triangles not on F,
+// with the other facet's polygon fanned from its vertex mean (as fan with no
+// bar). The first candidate is `near` (the facet whose plane is nearer the box
 // centre) with its vertex mean (polygon_point); the others are the other
-// central points of that polygon (central_points), then the same for the
-// other facet. A later candidate is taken only if every one of its
-// tetrahedra is positive by exact orient3d and its worst tet_shape is
-// strictly better; the float shapes only choose between valid
-// constructions (an invalid first candidate counts as +infinity, exactly
-// decided), and when none is valid the first is kept and the rebuild loop
-// (mesh_boxes) freezes the warp that caused it, as before. Why both:
-// the nearer plane's polygon can be a sliver lying almost in a box face
-// (every-run seed 197: 0.002 h from face x = 1, whose warped corners then
-// made its cones flat or inverted); the vertex mean is pulled towards a
-// face split into small squares, and can lie almost on the line of a chord
-// of that face (harsh seed 17: a 5 degree wedge's box beside boxes 16 and
-// 32 times smaller, aspect 466,599).
+// central points of that polygon (central_points), then the same for the other
+// facet. A later candidate is taken only if every one of its tetrahedra is
+// positive by exact orient3d and its worst tet_shape is strictly better; the
+// float shapes only choose between valid constructions (an invalid first
+// candidate counts as +infinity, exactly decided), and when none is valid the
+// first is kept and the rebuild loop (mesh_boxes) freezes the warp that caused
+// it, as before. Why both: the nearer plane's polygon can be a sliver lying
+// almost in a box face (every-run seed 197: 0.002 h from face x = 1, whose
+// warped corners then made its cones flat or inverted); the vertex mean is
+// pulled towards a face split into small squares, and can lie almost on the
+// line of a chord of that face (harsh seed 17: a 5 degree wedge's box beside
+// boxes 16 and 32 times smaller, aspect 466,599).
 BoxAssembler::FacetApex BoxAssembler::two_facet_apex(const std::vector<Tri>& tris, const FacetPlane* const pl[2],
                                                      const Chords* const ch[2], int near) const {
   FacetApex best{near, polygon_point(*ch[near], *pl[near])};

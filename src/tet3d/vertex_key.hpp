@@ -1,7 +1,8 @@
 #pragma once
 // Identities of mesh vertices on box faces crossed by a P facet (thesis §4.4
-// Case C), by defining features (docs/ALGORITHM.md §12.2), so that equal
-// vertices are found by key, never by rounded coordinates:
+// Case C), by defining features (docs/algorithm/tet3d_boxes.md "Vertex
+// identities"), so that equal vertices are found by key, never by rounded
+// coordinates:
 //
 //   Grid             a grid point (box corner, split point, square centre): p
 //   FacetCrossing    facet F crossing the box-edge segment [p, q] between two

@@ -115,20 +115,17 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     return out;
   };
   const auto& pv = domain.plc.vertices;
-  // Face translations (gap filled, bounded random seed 33, docs/ALGORITHM.md
-  // §12.5). §4.3's first pass moves a box edge l close to a P edge E by h/8
-  // along d (orthogonal to both, away from E) and bends the two box faces
-  // through l. When E clips the column along l of its edge box B (E ∩ B a
-  // few thousandths of h long), the apex on E ∩ I(B) then lies beyond the
-  // prewarped plane of the faces' unmoved parts and its cones onto them
-  // invert (the rebuild loop froze l: apex 0.002 h from both faces). Here
-  // each of those two faces of B is translated instead, by the component of
-  // the move along its outward normal n (only when positive: B grows):
-  // l gets exactly the move (h/8) d, every face of B stays planar (a face
-  // translated along its normal; the four faces beside it only stretch in
-  // their own planes), and the apex sees them all. h: the smallest box
-  // using a point of l (§4.3). The moves go through the same side and
-  // crossing rules and the same fallbacks as every first-pass move.
+  // Face translations (beyond the thesis; bounded random seed 33,
+  // docs/algorithm/tet3d_warp.md). §4.3's first pass moves a box edge l close to a P edge E by h/8
+  // along d (orthogonal to both, away from E) and bends the two box faces through l. When E clips
+  // the column along l of its edge box B (E ∩ B a few thousandths of h long), the apex on E ∩ I(B)
+  // then lies beyond the prewarped plane of the faces' unmoved parts and its cones onto them invert
+  // (the rebuild loop would freeze l: apex 0.002 h from both faces). Here each of those two faces
+  // of B is translated instead, by the component of the move along its outward normal n (only when
+  // positive: B grows): l gets exactly the move (h/8) d, every face of B stays planar (a face
+  // translated along its normal; the four faces beside it only stretch in their own planes), and
+  // the apex sees them all. h: the smallest box using a point of l (§4.3). The moves go through the
+  // same side and crossing rules and the same fallbacks as every first-pass move.
   struct FaceShift {
     int n = 0;                      // face normal axis
     std::int64_t at = 0;            // the face's grid coordinate along n
@@ -206,13 +203,13 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
         if (on_face(shifts[s], c.p)) face_points[s].push_back(i);
       }
     }
-  // Adaptive length (gap filled, suite seeds 135 and 67, docs/ALGORITHM.md
-  // §12.5). When E runs nearly in the translated face G and crosses its
-  // plane inside B (seed 135: 2.1°), the face moves away from E below that
-  // crossing but towards E's line beyond it: the full translation (h/8) c n
-  // carried ring segments of G across E's line, those moves were refused
-  // point by point, G bent past the apex on E, and the rebuild loop froze
-  // the box back to the cube. §4.3 moves points away from what they are
+  // Adaptive length (beyond the thesis; suite seeds 135 and 67,
+  // docs/algorithm/tet3d_warp.md). When E runs nearly in the translated face G
+  // and crosses its plane inside B (seed 135: 2.1°), the face moves away
+  // from E below that crossing but towards E's line beyond it: the full
+  // translation (h/8) c n would carry ring segments of G across E's line,
+  // those moves would be refused point by point, G would bend past the apex
+  // on E, and the rebuild loop would freeze the box back to the cube. §4.3 moves points away from what they are
   // near, never onto it, so G takes the largest 2^-k (k = 0..4) of its
   // translation under which every ring point v of it keeps, with h' the
   // smallest box using v:
@@ -295,15 +292,15 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     return total;
   };
   // Out-of-face moves of a reported point (`second_only` with `out_of_face`,
-  // docs/ALGORITHM.md §12.5): p lies on a face of the box whose tetrahedron
-  // inverted (the reporting box) with normal axis a, and its second pass has
-  // the component m along a. Kept only when it points out of the reporting
-  // box, so that box's face moves away from its own cone apex (p reported
-  // from boxes on both sides of the plane has no such direction). Whether
-  // the box across takes it well is decided by the caller (mesh_boxes
-  // compares the two meshes). Without `out_of_face` such components are
-  // dropped and the points counted (out_of_face_left), so the caller knows
-  // whether the other table would differ.
+  // docs/algorithm/tet3d_warp.md): p lies on a face of the box whose
+  // tetrahedron inverted (the reporting box) with normal axis a, and its second
+  // pass has the component m along a. Kept only when it points out of the
+  // reporting box, so that box's face moves away from its own cone apex (p
+  // reported from boxes on both sides of the plane has no such direction).
+  // Whether the box across takes it well is decided by the caller (mesh_boxes
+  // compares the two meshes). Without `out_of_face` such components are dropped
+  // and the points counted (out_of_face_left), so the caller knows whether the
+  // other table would differ.
   auto out_of_reporting_box = [](int a, std::uint8_t sides, double m) {
     const bool low = (sides & (1u << a)) != 0, high = (sides & (8u << a)) != 0;
     return m != 0 && low != high && (m > 0) == high;
@@ -337,10 +334,10 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // (pieces of box edges, or edges of smaller neighbouring squares): a
     // ring point far from E on a box edge that passes near E moves with
     // that edge's other points (same direction; the same length when they
-    // share h), so the edge stays straight (gap filled: moving only the
-    // pieces near E bent the box edge, the apex's cones onto the far
-    // squares inverted and the rebuild loop froze the whole edge: bounded
-    // random seed 122, docs/ALGORITHM.md §12.5).
+    // share h), so the edge stays straight (beyond the thesis: moving only
+    // the pieces near E bends the box edge, the apex's cones onto the far
+    // squares invert and the rebuild loop freezes the whole edge: bounded
+    // random seed 122, docs/algorithm/tet3d_warp.md).
     std::vector<std::pair<GridPoint, GridPoint>> segments;
     segments.reserve(c.box_edges.size() + c.neighbours.size());
     for (const BoxEdgeSpan& be : c.box_edges) segments.push_back(be.ends(c.p));
@@ -430,7 +427,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       // Elsewhere near E (outside a convex edge, or on one side of each
       // plane): h/16 along the sum of the normals oriented to v's sides,
       // which increases v's distance from both planes (a gap the thesis
-      // leaves to the first pass; docs/ALGORITHM.md §12.5).
+      // leaves to the first pass; docs/algorithm/tet3d_warp.md).
       const Vec3 d = (sf == Sign::Positive ? 1.0 : -1.0) * ec->f().normal() +
                      (sg == Sign::Positive ? 1.0 : -1.0) * ec->g().normal();
       const double len = norm(d);
@@ -496,14 +493,14 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // and its cones keep their heights, while the point still moves off its
     // close facet within them (for a one-facet move, each component kept is
     // the full move's, so the distance to the facet's plane does not drop;
-    // the side rules decide as for every move). A Case C1
-    // triangle 0.02 h wide on a face 0.004 h below an edge-box apex, spanned
-    // by such a point frozen with the face, was the every-run family's worst
-    // (seed 30, docs/ALGORITHM.md §12.5). A point with a second pass only is
-    // treated alike (stop 22; it used to be frozen whole: harsh seed 17, a
-    // grid point 1e-5 h from F left under a two-facet apex). A point with
-    // nothing left of its move, or whose move a rule refuses, is left in
-    // place (frozen, as before); reported again, it is frozen.
+    // the side rules decide as for every move). Frozen with the face, such
+    // a point would span a Case C1 triangle 0.02 h wide on a face 0.004 h
+    // below an edge-box apex (every-run seed 30, docs/algorithm/tet3d_warp.md).
+    // A point with a second pass only is treated alike (freezing it whole would
+    // leave it where it is, which on harsh seed 17 is a grid point 1e-5 h from
+    // F under a two-facet apex). A point with nothing left of its move, or
+    // whose move a rule refuses, is left in place (frozen); reported again, it
+    // is frozen.
     if (second_only != nullptr) {
       const auto it = second_only->find(c.p);
       if (it != second_only->end()) {
@@ -537,8 +534,8 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     }
     const Vec3 y = second_pass(x, facet, bisect, left);
     table.crowded_left += left == 1;
-    // Without copies (the behaviour before them): v keeps its first-pass
-    // move only, counted.
+    // Without copies (reflex_copies false, a test hook): v keeps its
+    // first-pass move only, counted.
     table.reflex_left += left == 2 && !reflex_copies;
     if (left == 2 && reflex_copies) {
       // Fig. 4.7 (§4.3): v lies in the exterior slot of reflex edge E,
@@ -596,7 +593,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       }
       table.fallback += ok ? 1 : 0;
     }
-    // Shortened moves (gap filled): every refused move crosses a plane (or
+    // Shortened moves (beyond the thesis): every refused move crosses a plane (or
     // an edge's line) that lies closer than the move's length, typically a
     // second facet of a thin wedge whose plane, not the facet itself, is
     // near v. The thesis moves v regardless; we keep every side decision and
@@ -605,8 +602,8 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // prewarped point: no clearance smaller, the smallest not met larger;
     // of those, the one with the largest smallest clearance (a vertex
     // 0.0003 h from F otherwise stays there: aspect 6,629 on a random
-    // prism; docs/ALGORITHM.md §12.5).
-    // Moves along a ring segment's line (gap filled): v = x0 moved away from
+    // prism; docs/algorithm/tet3d_warp.md).
+    // Moves along a ring segment's line (beyond the thesis): v = x0 moved away from
     // a ring neighbour w, along the axis of [v, w], by h/16 or a fraction of
     // it. For the segment [v, w] itself the line is unchanged (only one
     // coordinate of v changes), so orient3d(a, b, v, w) keeps its sign
@@ -615,9 +612,9 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // thesis's move along F's normal that the side rules allow (a box corner
     // clipped by F at 5e-7 h, whose h/16 move along the normal changes the
     // side of E's line a crossed segment passes: bounded random seed 58,
-    // docs/ALGORITHM.md §12.5). The same rules and the same "improves every
-    // clearance" test as the shortened moves decide; these are tried at full
-    // length too (the refused second-pass moves were tried already). Key
+    // docs/algorithm/tet3d_warp.md). The same rules and the same "improves
+    // every clearance" test as the shortened moves decide; these are tried at
+    // full length too (the refused second-pass moves were tried already). Key
     // facet: -1 (no facet's move).
     const std::size_t first_line_move = refused.size();
     if (!ok)

@@ -1,12 +1,13 @@
 #pragma once
 // Thesis §4.3, both warping passes, for the box vertices of every box kind
 // (empty, facet, edge, vertex, two-facet), as one table: grid point -> moved
-// coordinates, computed before any box is meshed (docs/ALGORITHM.md §12.5).
-// h of a vertex: the smallest box containing it (CornerSet::finest_level, or
-// the deepest job box whose faces use it, WarpCandidate::level). Distances
-// and directions are constructions (floating-point thresholds, as 2D §8.5:
-// either outcome is valid, only quality moves); every decision that shapes
-// the mesh stays exact.
+// coordinates, computed before any box is meshed
+// (docs/algorithm/tet3d_warp.md). h of a vertex: the smallest box containing it
+// (CornerSet::finest_level, or the deepest job box whose faces use it,
+// WarpCandidate::level). Distances and directions are constructions
+// (floating-point thresholds, as in 2D, docs/algorithm/quad2d.md "Mesh
+// vertices and warping": either outcome is valid, only quality
+// moves); every decision that shapes the mesh stays exact.
 //
 // First pass: a ring segment [v, w] (a piece of a box edge: our box edges are
 // chains of split points) closer than h/8 to a P edge E between two facets of
@@ -28,7 +29,7 @@
 //     facet's normal, away, accepted by the rules below except the side of
 //     the partner facet (`reflex_copied`; a copy refused: `reflex_left`);
 //   * both close elsewhere near E: h/16 along the sum of the two normals
-//     oriented to v's sides (gap filled); close to two facets without a
+//     oriented to v's sides (beyond the thesis); close to two facets without a
 //     common edge or to three: left, counted (`crowded_left`).
 // Acceptance: a move must change no decision made on the PREWARPED points:
 // v's side of every facet of every box using v (a square's status and cut
@@ -42,14 +43,14 @@
 // accepted and no nearer than the prewarped point to any facet of v's boxes
 // (in units of h/16, capped at 1) and no ring segment from v nearer to a P
 // edge between them (h/8), the smallest of these clearances larger
-// (`shortened`); then (gap filled, bounded seed 58) to v moved away from a
+// (`shortened`); then (beyond the thesis, bounded seed 58) to v moved away from a
 // ring neighbour w along the axis of [v, w], h/16 or 1/2 .. 1/16 of it, on
 // the same rules and clearance test: [v, w] keeps its line, so its side of
 // E's line and F's crossing of it are unchanged (`shortened`); else v stays
 // (`conflicts`). The caller may freeze points
 // whose move inverted a tetrahedron (`frozen`, facet_boxes.cpp).
 //
-// Square centres (gap filled): the thesis keeps the centre c of a Case A
+// Square centres (beyond the thesis): the thesis keeps the centre c of a Case A
 // square at the prewarped face centre, but the first pass moves whole box
 // edges by h/8, so when every corner of a square moves alike (a face near a
 // P edge) the face becomes a tent with c h/8 inside it, and an edge-box apex
@@ -86,7 +87,8 @@ struct EdgeBoxBounds {
   int edge = -1;
 };
 // `frozen` (may be null): points never moved (counted in frozen_left when they would be).
-// `reflex_copies` false: no Fig. 4.7 copies, a slot vertex stays (reflex_left).
+// `reflex_copies` false (detail::BoxMeshTestHooks only): no Fig. 4.7 copies,
+// a slot vertex stays (reflex_left).
 // `edge_boxes`: the edge boxes whose faces through a close box edge are
 // translated (warp.cpp, "face translations"), each face by the largest
 // 2^-k (k = 0..4) of its move that keeps its points' side decisions and
@@ -96,7 +98,7 @@ struct EdgeBoxBounds {
 // lies on a face of that tetrahedron's box: such a point gets its second pass
 // alone from the prewarped point (its first-pass and face moves dropped),
 // without the components along those axes (a face bent by the first pass
-// past an edge-box apex no longer freezes the point's move off its facet);
+// past an edge-box apex does not freeze the point's move off its facet);
 // when nothing is left or a rule refuses it, it stays (frozen_left). The entry's
 // bits: a for the reporting box's low face along axis a, 3 + a for its high
 // face. `out_of_face`: a component along such an axis that points out of the

@@ -109,7 +109,7 @@ struct WarpCandidate {
   std::int32_t level = -1;
   // The whole box edges through p of the boxes using it (§4.3's first pass
   // looks at box edges, not at the pieces between ring points:
-  // docs/ALGORITHM.md §12.5).
+  // docs/algorithm/tet3d_warp.md).
   std::span<const BoxEdgeSpan> box_edges;
 };
 

@@ -1,16 +1,16 @@
 #pragma once
-// Freezing the worst box's warps (docs/ALGORITHM.md §12.5, "worst-box
-// freeze"). The rebuild loop of facet_boxes.cpp stops at the first table on
-// which no tetrahedron inverts; a warp it keeps can still bend a face of an
-// edge box to within a sliver of the box's apex (flat-edge stress seeds 49
-// and 100: aspect ratio x alpha above 20,000). When the worst tetrahedron of
+// Freezing the worst box's warps (docs/algorithm/tet3d_warp.md "Freezing the
+// worst box's warps"). The rebuild loop of facet_boxes.cpp stops at the first
+// table on which no tetrahedron inverts; a warp it keeps can still bend a face
+// of an edge box to within a sliver of the box's apex (flat-edge stress seeds
+// 49 and 100: aspect ratio x alpha above 20,000). When the worst tetrahedron of
 // that table is flat (tet_shape above kFlatWorst), this pass freezes every
-// moved point of the worst tetrahedron's box, rebuilds the table and tries
-// the jobs it changes. A round is kept only when nothing inverts and every
-// tried job's worst tetrahedron is strictly better than the mesh's worst
-// before the round, so the mesh's worst tetrahedron strictly improves; a
-// trial of every job then decides, as in the rebuild loop. Runs below the
-// threshold do no extra work and keep their bytes.
+// moved point of the worst tetrahedron's box, rebuilds the table and tries the
+// jobs it changes. A round is kept only when nothing inverts and every tried
+// job's worst tetrahedron is strictly better than the mesh's worst before the
+// round, so the mesh's worst tetrahedron strictly improves; a trial of every
+// job then decides, as in the rebuild loop. Runs below the threshold do no
+// extra work and keep their bytes.
 #include <cstdint>
 #include <memory>
 #include <span>

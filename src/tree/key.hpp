@@ -1,5 +1,6 @@
 #pragma once
-// Integer keys of quadtree/octree boxes (DESIGN.md §2, §3: "tree boxes live on an
+// Integer keys of quadtree/octree boxes (docs/ARCHITECTURE.md "Modules and
+// dependencies", docs/DESIGN_RULES.md "Exact decisions": "tree boxes live on an
 // integer grid").
 //
 // Sizes. The root cube has side h(0) = S; a box of level L has side h(L) = S / 2^L.

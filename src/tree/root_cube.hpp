@@ -2,11 +2,12 @@
 // The root cube of a quadtree/octree and its choice (thesis §4.1.7 step 1: "a single
 // node representing a large box with all of the faces of P in its interior").
 //
-// Exactness (DESIGN.md §3). The side S is a power of two and the origin an integer
-// multiple of S/2. Then every box plane origin + S * q / 2^(L+1) equals
-// (S/2) * (m * 2^L + q) / 2^L with m = origin / (S/2) an integer, i.e. an integer
-// times a power of two, hence an exact double as long as |m * 2^L + q| <= 2^53. The
-// tree refuses to split below the level where that stops holding (Tree::max_level()).
+// Exactness (docs/DESIGN_RULES.md "Exact decisions"). The side S is a power of two
+// and the origin an integer multiple of S/2. Then every box plane origin + S * q /
+// 2^(L+1) equals (S/2) * (m * 2^L + q) / 2^L with m = origin / (S/2) an integer, i.e.
+// an integer times a power of two, hence an exact double as long as |m * 2^L + q| <=
+// 2^53. The tree refuses to split below the level where that stops holding
+// (Tree::max_level()).
 //
 // Why multiples of S/2 and not of S: a bounding box that straddles a multiple of
 // every large power of two (for example [-1, 1], which straddles 0) fits in no cube
@@ -78,7 +79,7 @@ RootCube<D> choose_root_cube(const std::array<double, D>& lo, const std::array<d
   throw InternalError("choose_root_cube: no representable root cube encloses the bounding box");
 }
 
-// ---- Generic grid (docs/ALGORITHM.md §10, "Generic grid")
+// ---- Generic grid (docs/algorithm/octree3d.md "Generic grid")
 //
 // The thesis assumes general position; inputs with dyadic coordinates (a unit
 // cube at the origin) put facets in box planes and edges on box edges. The

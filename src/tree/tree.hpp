@@ -1,6 +1,7 @@
 #pragma once
-// Integer-keyed quadtree (D = 2) / octree (D = 3) shared by the meshers (DESIGN.md §2;
-// thesis §4.1.1-4.1.3). Header-only template; src/tree/tree.cpp instantiates D = 2, 3.
+// Integer-keyed quadtree (D = 2) / octree (D = 3) shared by the meshers
+// (docs/ARCHITECTURE.md "Modules and dependencies"; thesis §4.1.1-4.1.3). Header-only
+// template; src/tree/tree.cpp instantiates D = 2, 3.
 //
 // Boxes. Every node is a box with a BoxKey (tree/key.hpp): a level L (side h(L) =
 // S / 2^L) and an origin on the h(L+1) grid. Real coordinates are dyadic and every
@@ -297,9 +298,10 @@ class Tree {
   std::int32_t leaf_count_ = 0;
   std::int32_t merged_count_ = 0;  // merge() calls so far
   // The quadtree's nodes in huge-page slabs (chunked_vector.hpp): on the 2D plate
-  // of docs/ALGORITHM.md §8.11 (1.2 million nodes, 65 MB) they took ~15k 4 KiB
-  // page faults, and the slabs go back to the system with the tree. The octree
-  // keeps malloc chunks until slabs are measured on the 3D runs.
+  // of docs/algorithm/quad2d.md "Speed and memory" (1.2 million nodes, 65 MB)
+  // they took ~15k 4 KiB page faults, and the slabs go back to the system with
+  // the tree. The octree keeps malloc chunks until slabs are measured on the 3D
+  // runs.
   detail::ChunkedVector<Node, 13, D == 2> nodes_;
   detail::KeyIndex index_;
 };

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end tests of `pqmesh mesh` on 3D input (issue 5): exit codes, no
+# End-to-end tests of `pqmesh mesh` on 3D input: exit codes, no
 # output file on failure, the summary lines, deterministic bytes.
 # usage: mesh3d_test.sh PQMESH_BINARY DATA_DIR FIXTURE_DIR
 pqmesh=$1 data=$2
@@ -49,10 +49,10 @@ expect 2 "mesh cube with a 2D size field" -- "$pqmesh" mesh "$data/3d/cube.poly"
 contains "$work/err" "field2d.txt" "size field error names the file"
 absent "$work/never_sf.vtu" "no output after a bad size field"
 
-# Leaf kinds the box tetrahedra do not handle yet: exit 2, the leaf and its
-# kind named, nothing written.
-expect 2 "mesh schoenhardt (vertex boxes not done)" -- "$pqmesh" mesh "$data/3d/schoenhardt.poly" -o "$work/never_s.vtu" --aligned-grid
-contains "$work/err" "leaf [0-9]+ .*kind [a-z-]+, not supported yet \(issue 5\)" "unsupported leaf message"
+# On the aligned grid only empty and facet boxes are meshed: exit 2, the
+# leaf and its kind named, nothing written.
+expect 2 "mesh schoenhardt (vertex boxes on the aligned grid)" -- "$pqmesh" mesh "$data/3d/schoenhardt.poly" -o "$work/never_s.vtu" --aligned-grid
+contains "$work/err" "leaf [0-9]+ .*kind [a-z-]+, not supported by the 3D mesher" "unsupported leaf message"
 absent "$work/never_s.vtu" "no output for an unsupported leaf"
 
 # The default (generic grid): a valid mesh, or a refusal that writes nothing.
@@ -60,8 +60,9 @@ expect 0 "mesh cube (generic grid)" -- "$pqmesh" mesh "$data/3d/cube.poly" -o "$
 contains "$work/out" "^grid +generic, planes shifted by" "generic grid line"
 contains "$work/out" "^check +valid" "generic grid mesh is valid"
 
-# Coplanar facets (ALGORITHM.md §2 step 11): cube.obj has a vertex in the
-# middle of a straight edge (two facets share two collinear edges).
+# Coplanar facets (docs/algorithm/input.md "Merging coplanar facets"): cube.obj
+# has a vertex in the middle of a straight edge (two facets share two collinear
+# edges).
 expect 0 "mesh cube.obj" -- "$pqmesh" mesh "$data/3d/cube.obj" -o "$work/obj.vtu" --quiet
 expect 0 "check the cube.obj mesh" -- "$pqmesh" check "$work/obj.vtu" --domain "$data/3d/cube.obj"
 # The unit cube with its bottom given as two triangles: same marker -> merged

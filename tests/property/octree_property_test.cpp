@@ -121,7 +121,7 @@ TEST(OctreeInvariantsRandom, LeafKindsLemma1BalanceTheorem5) {
 // Harsh seed 9 (random_domains.hpp, harsh_polyhedron_options) on the generic
 // grid, as `pqmesh mesh` builds it: the leaves balance-adjacent to an edge
 // box of a trihedral vertex cone all have a kind, none Other
-// (OctreeBuilder::neighbour_would_be_of_no_kind, ALGORITHM.md §10).
+// (OctreeBuilder::neighbour_would_be_of_no_kind, docs/algorithm/octree3d.md).
 TEST(OctreeInvariantsRandom, HarshSeed9EdgeBoxNeighboursHaveAKind) {
   const std::uint64_t seed = 9;
   const test::PolyhedronOptions options = test::harsh_polyhedron_options();

@@ -2,8 +2,9 @@
 // (nonconvex, spikes down to ~1 degree, near-touching holes, coarse-grid
 // snapped vertices; tests/support/random_domains.hpp): every mesh passes the
 // checker, and the smallest angle meets the bound documented in
-// docs/ALGORITHM.md §8.8, min angle >= min(C * alpha, THETA0), and 20 degrees
-// when alpha >= 60 degrees (the default refinement pass, §8.10).
+// docs/algorithm/quad2d.md "Angle bound", min angle >= min(C * alpha, THETA0),
+// and 20 degrees when alpha >= 60 degrees (the default refinement pass,
+// docs/algorithm/quad2d.md "Delaunay refinement pass").
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
-// Seeded random input domains for property tests (DESIGN.md §3, §9: the
-// corpus x invariants tests of tests/property).
+// Seeded random input domains for property tests (docs/DESIGN_RULES.md "Exact
+// decisions", "Conventions": the corpus x invariants tests of tests/property).
 //
 // Every generator is a pure function of its seed and options: the random bits
 // come from std::mt19937_64 (whose output sequence the C++ standard fixes) and

@@ -406,9 +406,9 @@ TetMesh3 corner_split(Vec3 p, bool on_edge) {
   return m;
 }
 
-// Rounded Steiner points (ALGORITHM.md §5): 1/3 and 2/3 have no double; their
-// roundings lie an ulp off the slanted facet and edge (3 fl(1/3) != 1) and are
-// accepted, while a point 1e-9 off is not.
+// Rounded Steiner points (docs/algorithm/quality.md "The validity checker"):
+// 1/3 and 2/3 have no double; their roundings lie an ulp off the slanted facet
+// and edge (3 fl(1/3) != 1) and are accepted, while a point 1e-9 off is not.
 TEST(Check3d, RoundedSteinerPointsOnSlantedFacetAndEdge) {
   const Domain3 d = corner_tetrahedron();
   const double third = 1.0 / 3.0, two_thirds = 2.0 / 3.0;

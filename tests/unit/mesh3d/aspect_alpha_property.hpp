@@ -22,7 +22,7 @@ namespace pqmesh::test {
 
 // C is kMeasuredAspectAlphaC (pqmesh/tetmesh.hpp): 20% above the largest
 // product measured over the corpus and the random families (4,568, bounded
-// seed 193). Per-family measurements: docs/ALGORITHM.md §13.
+// seed 193). Per-family measurements: docs/algorithm/mesh3d.md.
 inline constexpr double kAspectAlphaC = kMeasuredAspectAlphaC;  // the library's copy (tetmesh.hpp)
 
 // aspect * alpha of a mesh, for the messages.

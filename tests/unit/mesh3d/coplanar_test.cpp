@@ -1,10 +1,10 @@
-// Inputs whose facets are not maximal (ALGORITHM.md, coplanar facets): a
-// straight edge of P with a vertex in its middle (data/3d/cube.obj), a cap
-// given as coplanar pieces with one marker (merged by make_domain,
-// plc/merge_coplanar.hpp); flat edges between different markers are tested
-// in flat_edge_test.cpp. Every mesh is
-// checked whole (check_mesh) and its boundary markers are checked against
-// the facet planes (mesh_check_util.hpp).
+// Inputs whose facets are not maximal (docs/algorithm/input.md "Merging
+// coplanar facets"): a straight edge of P with a vertex in its middle
+// (data/3d/cube.obj), a cap given as coplanar pieces with one marker (merged by
+// make_domain, plc/merge_coplanar.hpp); flat edges between different markers
+// are tested in flat_edge_test.cpp. Every mesh is checked whole (check_mesh)
+// and its boundary markers are checked against the facet planes
+// (mesh_check_util.hpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>

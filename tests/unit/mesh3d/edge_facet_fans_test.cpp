@@ -1,21 +1,7 @@
-// Regression test for edge boxes whose cones from the apex on E are flat,
-// made with F ∩ b and G ∩ b fanned from points of their own facets
-// (docs/ALGORITHM.md §12.5 "Facet fans in flat edge boxes";
-// src/tet3d/edge_box_fans.cpp).
-//
-// Bounded seed 86 (alpha 42.97 deg, 357k tetrahedra) is the cheap input: its
-// worst tetrahedron was the cone from the apex v on E (edge 11) over a small
-// face triangle on face y = 1 of edge box leaf 4439 (h = 1/64), a chord of
-// facet 5 (one of E's facets) and a warped corner, v 0.018 h from that face
-// (aspect x alpha 1,791.7). One edge box takes the construction, and the
-// worst is now a united vertex box's tetrahedron: measured 286.3. (Bounded
-// seeds 126 and 172 go 2,800.2 -> 75.0 and 17,197.9 -> 1,482.4 the same way,
-// at 7 and 46 s cpu.)
-//
-// The run goes through tet_mesh's pipeline (warped_box_mesh.hpp), then
-// check_mesh. Bound: about the geometric mean of the two measurements,
-// sqrt(1,791.7 x 286.3) = 716; without the construction the assertion fails
-// (and the stat does not count).
+// Edge boxes with flat cones from the apex on E fan F ∩ b and G ∩ b from
+// points of their own facets (src/tet3d/edge_box_fans.cpp). Bounded seed 86
+// through tet_mesh's pipeline and check_mesh: some edge box takes the fans
+// and aspect x alpha <= 716.
 #include <gtest/gtest.h>
 
 #include "pqmesh/domain.hpp"

@@ -1,8 +1,8 @@
 // Flat edges: coplanar facets with different markers (boundary-condition
 // patches on one plane) stay separate facets, and the edge between them is a
 // 180-degree edge of P that the mesh must recover (EdgeCone's flat form,
-// cut_square_edge.hpp; docs/ALGORITHM.md §12.4 "Flat edges"). Every mesh is
-// checked whole (check_mesh recovers every input edge and facet), every
+// cut_square_edge.hpp; docs/algorithm/tet3d_boxes.md "Flat edges"). Every mesh
+// is checked whole (check_mesh recovers every input edge and facet), every
 // boundary triangle must lie in a facet with its marker, the boundary area per
 // marker must equal the input's, and the aspect ratio must stay within the
 // Theorem 7 bound C / alpha of the other test inputs.
@@ -145,8 +145,8 @@ INSTANTIATE_TEST_SUITE_P(Shards, FlatEdgesRandom, ::testing::Range(0, kRandomSha
 
 // The same construction on every-run seeds 12..199: a disabled measurement
 // family (--gtest_also_run_disabled_tests), 47 shards of 4 seeds, about 13
-// minutes of cpu (docs/ALGORITHM.md §12.4 "Flat edges"). Checked: every seed
-// is valid with its markers in place, warped, and within kAspectAlphaC.
+// minutes of cpu (docs/algorithm/tet3d_boxes.md "Flat edges"). Checked: every
+// seed is valid with its markers in place, warped, and within kAspectAlphaC.
 constexpr int kFamilyFirstSeed = kRandomShards * kRandomSeedsPerShard;
 constexpr int kFamilySeedsPerShard = 4;
 constexpr int kFamilyShards = (200 - kFamilyFirstSeed) / kFamilySeedsPerShard;

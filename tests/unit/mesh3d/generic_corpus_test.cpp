@@ -52,7 +52,7 @@ TEST_P(GenericCorpus, ValidWithFacetMarkers) {
 }
 
 // The fast models run in every test; the others (0.5-10 s each in Release,
-// measured in ALGORITHM.md §13) are disabled for test time and run with
+// measured in docs/algorithm/mesh3d.md) are disabled for test time and run with
 // --gtest_also_run_disabled_tests.
 INSTANTIATE_TEST_SUITE_P(Fast, GenericCorpus, ::testing::Values("cube.poly", "l_block.poly", "tuning_fork.poly"));
 INSTANTIATE_TEST_SUITE_P(DISABLED_Slow, GenericCorpus,

@@ -3,8 +3,8 @@
 // conformity, every facet recovered by boundary triangles), and every boundary
 // triangle carries the marker of a facet whose plane passes through each of
 // its vertices' ulp boxes (within_ulp_of_plane, the checker's rule for rounded
-// boundary points, ALGORITHM.md §5), decided here independently of the
-// mesher's own choice; every input marker is used.
+// boundary points, docs/algorithm/quality.md "The validity checker"), decided
+// here independently of the mesher's own choice; every input marker is used.
 #include <gtest/gtest.h>
 
 #include <map>

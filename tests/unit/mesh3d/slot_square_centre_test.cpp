@@ -1,21 +1,9 @@
-// Regression: a block with a thin exterior V slot (the domain of
-// tests/unit/tet3d/reflex_slot_copies_test.cpp: apex (0.47, 0.31), bottom
-// z = 0.1, opening 2w at z = 0.9) made warp_candidates (tet3d/facet_boxes.cpp)
-// throw "tet3d: a square centre is a ring point", and tet_mesh fell back to
-// the unwarped mesh (max aspect 474 at w = 0.027). Cause: the united box B
-// (§4.1.3) of the slot's mouth vertex on one wall has level-L cells inside a
-// level L-1 leaf of the other wall's side (that cube's component there is the
-// other vertex's, the slot cell of B's side has no component); a corner of B
-// is then the centre of that leaf's top face square, which stayed whole since
-// no leaf has that corner, while B's squares use it as a ring point. Fix:
-// CornerSet also holds every united box's cell corners (tet3d/box_faces.cpp),
-// so that square is split like B's face and its centre is no ring point.
-//
-// Whole pipeline (tet_mesh, default options: generic grid, warping on), then
-// check_mesh; it asserts that warping did not fail (it did for both widths
-// before the fix) and moved vertices, and the Theorem 7 property with the
-// suite's measured constant (pqmesh/tetmesh.hpp kMeasuredAspectAlphaC).
-// Cost: about 3 s cpu per width in Release (0.33M tetrahedra).
+// A block with a thin exterior V slot (the domain of
+// tests/unit/tet3d/reflex_slot_copies_test.cpp), half-widths 0.027 and
+// 0.041: CornerSet holds every united box's cell corners (box_faces.cpp),
+// so no square centre is a ring point. Checked through tet_mesh: the warped
+// run does not fail, moves vertices, passes check_mesh and keeps aspect x
+// alpha <= kMeasuredAspectAlphaC. Cost: about 3 s cpu per width in Release.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, AlignedCorpus, ::testing::Values("cube.poly", "
 
 std::string slurp(const std::string& path) { return test::file_bytes(path); }
 
-// CGAL's determinism test: mesh twice, write, compare bytes (issue 5 item 3).
+// Determinism: mesh twice, write, compare bytes.
 TEST(TetMeshDeterminism, ByteIdenticalFiles) {
   const Domain3 d = make_domain(load_plc("l_block.poly"));
   const auto dir = std::filesystem::temp_directory_path() / ("pqmesh_mesh3d_det_" + std::to_string(::getpid()));
@@ -131,7 +131,7 @@ TEST(TetMeshRegions, AttributeOfTheRegionInsideP) {
   for (const int m : r0.mesh.tetrahedron_markers) ASSERT_EQ(m, 0);
 }
 
-// Issue 5 item 7: a size field refining around a point. Every tetrahedron of
+// A size field refining around a point. Every tetrahedron of
 // an empty box lies in its box, whose side h is at most the size function's
 // minimum over the box (octree phase 0), so its longest edge is at most
 // sqrt(3) h <= sqrt(3) f(x) for any x in it, e.g. its centroid.
@@ -186,11 +186,11 @@ TEST(TetMeshUnsupported, ClearErrorForOtherLeafKinds) {
   const Domain3 d = make_domain(load_plc("schoenhardt.poly"));
   try {
     (void)tet_mesh(d, aligned());
-    FAIL() << "schoenhardt meshed although vertex and edge boxes are not done";
+    FAIL() << "schoenhardt meshed on the aligned grid, which has no vertex or edge boxes";
   } catch (const MeshNotSupported& e) {
     const std::string what = e.what();
     std::printf("schoenhardt: %s\n", what.c_str());
-    EXPECT_NE(what.find("not supported yet (issue 5)"), std::string::npos) << what;
+    EXPECT_NE(what.find("not supported by the 3D mesher"), std::string::npos) << what;
     EXPECT_NE(what.find("leaf " + std::to_string(e.ids().at(0))), std::string::npos) << what;
     EXPECT_NE(what.find(e.kind()), std::string::npos) << what;
     EXPECT_TRUE(e.kind() == "vertex-cone" || e.kind() == "edge-cone" || e.kind() == "two-facet" ||

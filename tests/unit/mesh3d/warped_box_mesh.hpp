@@ -19,7 +19,7 @@
 
 namespace pqmesh::test {
 
-// The pipeline's stages, kept for a caller that inspects the boxes (the probe).
+// The pipeline's stages, for a caller that inspects the boxes (the probe).
 struct WarpedBoxRun {
   std::unique_ptr<mv3d::OctreeBuilder> builder;
   mesh3d::BoxPlan plan;
@@ -33,7 +33,9 @@ inline tet3d::BoxMeshOptions warped_options() {
   return bo;
 }
 
-inline WarpedBoxRun warped_box_run(const Domain3& d, const tet3d::BoxMeshOptions& bo = warped_options()) {
+// `hooks` turns off stages of mesh_boxes (tet_mesh never does).
+inline WarpedBoxRun warped_box_run(const Domain3& d, const tet3d::BoxMeshOptions& bo = warped_options(),
+                                   const tet3d::detail::BoxMeshTestHooks& hooks = {}) {
   mv3d::OctreeOptions oo;
   oo.separate = true;
   oo.generic_grid = true;
@@ -42,7 +44,7 @@ inline WarpedBoxRun warped_box_run(const Domain3& d, const tet3d::BoxMeshOptions
   run.builder->build();
   run.plan = mesh3d::plan_all_kinds(*run.builder);
   const tet3d::CornerSet corners(*run.builder);
-  run.mesh = tet3d::mesh_boxes(run.builder->tree(), corners, d, run.plan.jobs, bo);
+  run.mesh = tet3d::mesh_boxes(run.builder->tree(), corners, d, run.plan.jobs, bo, hooks);
   return run;
 }
 

@@ -1,4 +1,4 @@
-// Worst edge boxes of the random families (docs/ALGORITHM.md §12.5), each
+// Worst edge boxes of the random families (docs/algorithm/tet3d_warp.md), each
 // through tet_mesh's pipeline (warped_box_mesh.hpp) and check_mesh.
 // Bounded seeds 76 and 125 (P edge E clips a box edge / runs 0.002 h inside
 // a box face): no warp frozen, no rebuild, aspect x alpha <= kAspectAlphaC.

@@ -240,7 +240,7 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
   SCOPED_TRACE(what);
   const double g = steiner_free_bound(d).g;
   const PolygonQ q = polygon_q(d, steiner_free_bound(d, {.sides_at_far_end = true}));
-  // The spoke floor (docs/ALGORITHM.md §11.7 deviation 4) made Q and R
+  // The spoke floor (docs/algorithm/nosteiner2d.md "Spoke floor") made Q and R
   // representable and valid on every input here (measured); asserted.
   EXPECT_TRUE(q.representable);
   if (!q.representable) {
@@ -250,7 +250,8 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
   const auto ql = q_loop_points(q);
   const PolygonR r = shrink_q_to_r(ql);
   EXPECT_TRUE(r.representable);
-  if (!r.representable) {  // shrink distances at the coordinates' resolution (docs/ALGORITHM.md §11.8)
+  // Shrink distances at the coordinates' resolution (docs/algorithm/nosteiner2d.md "Delta and the shrink to R").
+  if (!r.representable) {
     ++st.skipped_r;
     return;
   }
@@ -263,7 +264,7 @@ void run(const Domain2& d, const std::string& what, Stats& st, const QuadMeshOpt
   QuadMeshResult rm;
   try {
     rm = quad_mesh(polygon_r_domain(r), r_options);
-  } catch (const InternalError& ex) {  // quad2d's depth limit (docs/ALGORITHM.md §11.9)
+  } catch (const InternalError& ex) {  // quad2d's depth limit (docs/algorithm/nosteiner2d.md "Meshing R")
     ++st.unmeshable;
     return;
   }
@@ -384,7 +385,7 @@ TEST(MatchQR, Corpus) {
 }
 
 // R meshed by the quadtree alone (no Delaunay pass: the thesis's §5.3 mesher;
-// docs/ALGORITHM.md §11.9): the same checks.
+// docs/algorithm/nosteiner2d.md "Meshing R"): the same checks.
 TEST(MatchQR, CorpusUnrefinedR) {
   Stats st;
   QuadMeshOptions unrefined;

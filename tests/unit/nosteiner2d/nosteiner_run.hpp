@@ -65,7 +65,7 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   EXPECT_EQ(s.path == NoSteinerPath::Full, s.fallback_reason.empty()) << s.fallback_reason;
   // The min angle reported is the mesh's (recomputed here independently of the stats).
   EXPECT_EQ(s.min_angle, min_triangle_angle(res.mesh));
-  // Theorem 21 with the constant of §11.2: no Steiner-free-boundary
+  // Theorem 21 with the constant of docs/algorithm/nosteiner2d.md "The constant": no Steiner-free-boundary
   // triangulation beats C g(P); ours is one, so this must hold.
   EXPECT_LE(s.min_angle, s.upper_bound * (1 + 1e-12));
   ++st.domains;
@@ -88,7 +88,7 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   if (s.construction_min_angle < s.cdt_min_angle) ++st.construction_worse_than_cdt;
   st.construction_min_ratio = std::min(st.construction_min_ratio, s.construction_min_angle / s.g);
   st.construction_ratios.push_back(s.construction_min_angle / s.g);
-  // The pipeline before that choice, measured (the finding of §11.12).
+  // The pipeline before that choice, measured (docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison").
   const double pipeline_ratio = s.pipeline_min_angle / s.g;
   (s.pipeline_path == NoSteinerPath::Full ? st.full : s.pipeline_path == NoSteinerPath::QOnly ? st.q_only : st.cdt)++;
   if (s.path == NoSteinerPath::CdtBetter) ++st.cdt_better;

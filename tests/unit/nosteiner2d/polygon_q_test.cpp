@@ -37,9 +37,9 @@ void check_q(const Domain2& d, const std::string& what, Stats& st) {
   SCOPED_TRACE(what);
   const SteinerFreeBound b = steiner_free_bound(d, {.sides_at_far_end = true});
   const PolygonQ q = polygon_q(d, b);
-  // With the spoke floor (docs/ALGORITHM.md §11.7 deviation 4) Q is
-  // representable on every input here (before it, 58 of the 300 random
-  // polygons had spokes below the coordinates' resolution).
+  // The spoke floor (docs/algorithm/nosteiner2d.md "Spoke floor") keeps Q
+  // representable on every input here (without it, some random polygons have
+  // spokes below the coordinates' resolution).
   EXPECT_TRUE(q.representable);
   if (!q.representable) {
     ++st.skipped;
@@ -74,7 +74,7 @@ void check_q(const Domain2& d, const std::string& what, Stats& st) {
       st.max_q_angle = std::max(st.max_q_angle, ang);
     }
   }
-  // A measured constant (docs/ALGORITHM_ch5_draft.md): Q^c's min angle was
+  // A measured constant (docs/algorithm/nosteiner2d.md): Q^c's min angle was
   // >= 0.014 g on this corpus; 0.01 guards against regressions.
   EXPECT_GE(q.min_angle, 0.01 * b.g);
   st.min_ratio = std::min(st.min_ratio, q.min_angle / b.g);

@@ -1,9 +1,10 @@
-// The quality post-pass (src/nosteiner2d/quality_pass.hpp, docs/ALGORITHM.md
-// §11.12): on hand meshes whose optimum follows by hand, and on the
-// construction's own meshes of data/2d and of the random polygons where the
-// pass used to stop below the CDT: the output passes check_mesh with the
-// no-boundary-Steiner check, keeps the input vertices, never lowers the min
-// angle, never ends below the CDT of P, and is deterministic.
+// The quality post-pass (src/nosteiner2d/quality_pass.hpp,
+// docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison"): on hand
+// meshes whose optimum follows by hand, and on the construction's own meshes of
+// data/2d and of random polygons whose construction is below the CDT: the
+// output passes check_mesh with the no-boundary-Steiner check, keeps the input
+// vertices, never lowers the min angle, never ends below the CDT of P, and is
+// deterministic.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -126,11 +127,12 @@ TEST(QualityPass, ConstructionMeshesOfCorpus) {
 
 // The random polygons (tests/support/random_domains.hpp) where the pass
 // without its last stage (QualityPassOptions::large_cavities) stopped below
-// the CDT of P (measured 7 of 300; docs/ALGORITHM.md §11.12): near-touching
-// holes and snapped vertices leave a worst triangle that no flip, single
-// removal, move or disk cavity improves, while a cavity around a hole (or the
-// whole mesh) does. With the stage the pass ends at or above the CDT, never
-// below the run without it, and the stage fired wherever it was needed.
+// the CDT of P (measured 7 of 300; docs/algorithm/nosteiner2d.md "Fallbacks and
+// the CDT comparison"): near-touching holes and snapped vertices leave a worst
+// triangle that no flip, single removal, move or disk cavity improves, while a
+// cavity around a hole (or the whole mesh) does. With the stage the pass ends
+// at or above the CDT, never below the run without it, and the stage fired
+// wherever it was needed.
 TEST(QualityPass, LargeCavitiesLiftTheStuckRandomPolygonsToTheCdt) {
   int below_without = 0;
   for (std::uint64_t seed : {21, 59, 60, 78, 116, 144, 217}) {

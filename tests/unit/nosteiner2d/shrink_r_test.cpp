@@ -2,7 +2,8 @@
 // quadtree mesher) on data/2d and 300 seeded random polygons with holes.
 //
 // Per domain (a domain whose Q or R is not representable fails and is
-// counted; none since the spoke floor, docs/ALGORITHM.md §11.7):
+// counted; none since the spoke floor, docs/algorithm/nosteiner2d.md "Welding
+// and the polygon Q"):
 //  * R's combinatorial checks hold (shrink_q_to_r's exact checks) and R is a
 //    valid polygon with holes (make_domain);
 //  * R lies in the interior of Q: no side of R meets a side of Q (exact
@@ -11,8 +12,8 @@
 //  * delta bounds: every R side lies on its shrunk line, at delta/4 from the
 //    line of its Q side; every R vertex W of Q vertex V has
 //    dist(W, dQ) >= min(d_in, d_out, delta(V) - |VW|) > 0 (derivation in
-//    docs/ALGORITHM.md §11.8), and Theorem 30 in the Euclidean form is
-//    measured (delta_R(F) / delta(source));
+//    docs/algorithm/nosteiner2d.md "Delta and the shrink to R"), and Theorem 30
+//    in the Euclidean form is measured (delta_R(F) / delta(source));
 //  * R's quad_mesh passes check_mesh against R, and the two properties of
 //    §5.5.1 are measured; property 2 is asserted against the bound implied by
 //    quad_mesh's stated angle guarantee (quadmesh_bound.hpp), property 1
@@ -148,8 +149,9 @@ struct Stats {
 };
 
 // Property 1 floor: the measured min of L(G) / delta over the corpus and the
-// random polygons was 0.0062 (printed as "property 1", docs/ALGORITHM.md
-// §11.9); the assertion guards it, rounded down.
+// random polygons was 0.0062 (printed as "property 1",
+// docs/algorithm/nosteiner2d.md "Meshing R"); the assertion guards it, rounded
+// down.
 constexpr double kProperty1Floor = 0.005;
 
 // mesh: also mesh R (§5.3) and check the mesh; the shrink itself is always checked.
@@ -158,9 +160,9 @@ void check_r(const Domain2& d, const std::string& what, Stats& st, const QuadMes
   SCOPED_TRACE(what);
   const SteinerFreeBound b = steiner_free_bound(d, {.sides_at_far_end = true});
   const PolygonQ q = polygon_q(d, b);
-  // With the spoke floor (docs/ALGORITHM.md §11.7 deviation 4) Q and R are
-  // representable on every input here (before it 58 + 65 of the 300 random
-  // polygons were skipped); the skips stay counted in case that regresses.
+  // The spoke floor (docs/algorithm/nosteiner2d.md "Spoke floor") keeps Q and
+  // R representable on every input here; skips are still counted and
+  // printed.
   EXPECT_TRUE(q.representable);
   if (!q.representable) {
     ++st.skipped;
@@ -292,7 +294,8 @@ void check_r(const Domain2& d, const std::string& what, Stats& st, const QuadMes
 
 void print(const Stats& st, const char* what) {
   std::cout << "[shrink R] " << what << ": " << st.domains << " domains checked, " << st.skipped
-            << " skipped (Q not representable in doubles, ALGORITHM.md 11.6), " << st.r_unrepresentable
+            << " skipped (Q not representable in doubles, docs/algorithm/nosteiner2d.md \"Known limits\"), "
+            << st.r_unrepresentable
             << " skipped (delta/4 below 2^-44 |coordinates|), " << st.unmeshable
             << " with R not meshed (quad2d depth limit), " << st.not_meshed_by_choice
             << " shrunk but not meshed (test time); Q vertices case 1/2: " << st.case1

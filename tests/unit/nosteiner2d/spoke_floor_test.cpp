@@ -1,9 +1,9 @@
-// The spoke floor (src/nosteiner2d/spoke_floor.hpp, docs/ALGORITHM.md §11.7
-// deviation 4): a hand case derived below, and on the corpus and the random
-// polygons, applied to every welded vertex wedge with the floor polygon_q uses
-// (kSpokeFloorFraction delta_P(V)): every spoke reaches the floor, the first
-// and last angles are kept, steps stay in (0, pi/2], and the wedge's min angle
-// does not decrease.
+// The spoke floor (src/nosteiner2d/spoke_floor.hpp,
+// docs/algorithm/nosteiner2d.md "Spoke floor"): a hand case derived below, and
+// on the corpus and the random polygons, applied to every welded vertex wedge
+// with the floor polygon_q uses (kSpokeFloorFraction delta_P(V)): every spoke
+// reaches the floor, the first and last angles are kept, steps stay in (0,
+// pi/2], and the wedge's min angle does not decrease.
 #include <gtest/gtest.h>
 
 #include <algorithm>

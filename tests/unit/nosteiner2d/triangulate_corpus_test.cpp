@@ -17,18 +17,18 @@
 namespace pqmesh {
 namespace {
 
-// Measured floor of achieved / g(P) (docs/ALGORITHM.md §11.12), rounded down.
-// With the §5.4 matching the smallest measured value is 0.0063 (the regular
-// 1000-gon, where g is nearly pi); on data/2d 0.026 (comb). The floor guards
-// against regressions. With the spoke floor (docs/ALGORITHM.md §11.7
-// deviation 4) every input here takes the Full path (measured: all 8 + 9;
-// before it the hard cases went 3 full / 2 q-only / 4 cdt), asserted in run().
+// Measured floor of achieved / g(P) (docs/algorithm/nosteiner2d.md "Fallbacks and the CDT
+// comparison"), rounded down. With the §5.4 matching the smallest measured value is 0.0063 (the
+// regular 1000-gon, where g is nearly pi); on data/2d 0.026 (comb). The floor guards against
+// regressions. With the spoke floor (docs/algorithm/nosteiner2d.md "Spoke floor") every input here
+// takes the Full path (all 8 + 9), asserted in run().
 constexpr double kMeasuredK = 5e-3;
 
 // Measured floor of (construction + quality post-pass) / g(P), rounded down
-// (docs/ALGORITHM.md §11.12; quality_pass.hpp): 0.161 on data/2d (comb),
-// 0.055 on the hard cases (regular 1000-gon). The pass never ends below the
-// CDT of P (its whole-mesh cavity stage; asserted in run_and_check).
+// (docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison";
+// quality_pass.hpp): 0.161 on data/2d (comb), 0.055 on the hard cases (regular
+// 1000-gon). The pass never ends below the CDT of P (its whole-mesh cavity
+// stage; asserted in run_and_check).
 constexpr double kMeasuredKPass = 0.05;
 
 Pslg2 loops_pslg(const std::vector<std::vector<Vec2>>& loops) {
@@ -172,13 +172,14 @@ void hard_cases(const NoSteinerOptions& options, double k, const char* label) {
   test::print(st, label);
 }
 
-// The reflex notch, bound derived by hand (docs/ALGORITHM.md §11.12): the
-// triangle ABC on the bottom side A = (0,0), B = (1,0) cannot reach above
-// the reflex vertex R = (31/64, y) at x = 31/64 (the points just above R are
-// outside P), so the smaller of its angles at A, B is at most
-// atan(y / (31/64)) in every triangulation without boundary Steiner points.
-// g(P) is that value (pair (A, AB), W = R, r = |AR| > 1/e so h = angle RAB);
-// the CDT holds ABR, whose smallest angle is at B: atan(y / (33/64)).
+// The reflex notch, bound derived by hand (docs/algorithm/nosteiner2d.md
+// "Fallbacks and the CDT comparison"): the triangle ABC on the bottom side A =
+// (0,0), B = (1,0) cannot reach above the reflex vertex R = (31/64, y) at x =
+// 31/64 (the points just above R are outside P), so the smaller of its angles
+// at A, B is at most atan(y / (31/64)) in every triangulation without boundary
+// Steiner points. g(P) is that value (pair (A, AB), W = R, r = |AR| > 1/e so h
+// = angle RAB); the CDT holds ABR, whose smallest angle is at B: atan(y /
+// (33/64)).
 TEST(NoSteinerTriangulation, NotchBound) {
   for (double y : {1.0 / 128, 1.0 / 4096}) {
     const Domain2 d = polygon({{0, 0}, {1, 0}, {1, 1}, {0.625, 1}, {0.484375, y}, {0.375, 1}, {0, 1}});
@@ -196,7 +197,8 @@ TEST(NoSteinerTriangulation, NotchBound) {
 TEST(NoSteinerTriangulation, HardCases) { hard_cases(test::raw_options(), kMeasuredK, "hard cases"); }
 
 // The same with the thesis's fans (~5 s CPU; run with
-// --gtest_also_run_disabled_tests): the measurement of docs/ALGORITHM.md §11.10.
+// --gtest_also_run_disabled_tests): the measurement of
+// docs/algorithm/nosteiner2d.md "Matching R to Q".
 TEST(NoSteinerTriangulation, DISABLED_HardCasesThesisFans) {
   hard_cases(fans_options(), kMeasuredKFans, "hard cases, thesis fans in Q \\ R");
 }

@@ -5,8 +5,7 @@
 // construction's mesh (before the quality pass and keep_better_cdt) with the
 // measured k below. After the quality pass the pipeline (before
 // keep_better_cdt) is never below the CDT of P (asserted in run_and_check;
-// before the pass's whole-mesh cavity stage it was on 7 of 300, seeds 21, 59,
-// 60, 78, 116, 144, 217, docs/ALGORITHM.md §11.12).
+// docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison").
 #include <gtest/gtest.h>
 
 #include "nosteiner_run.hpp"
@@ -16,11 +15,11 @@ namespace pqmesh {
 namespace {
 
 // Measured floor of pipeline min angle / g(P) over these 300 polygons
-// (docs/ALGORITHM.md §11.12), rounded down. A measured constant of this
-// implementation (§5.4 matching), not the thesis's. Measured 0.0122 (seed
-// 220). With the spoke floor (§11.7 deviation 4) every polygon takes the Full
-// path (measured 300 of 300; before it, 123 fell back to QOnly or the CDT and
-// the floor over all paths was 6.6e-6), so the Full path is asserted too.
+// (docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison"), rounded
+// down. A measured constant of this implementation (§5.4 matching), not the
+// thesis's. Measured 0.0122 (seed 220). With the spoke floor
+// (docs/algorithm/nosteiner2d.md "Spoke floor") every polygon takes the Full
+// path (300 of 300), so the Full path is asserted too.
 constexpr double kMeasuredK = 0.01;
 
 // Runs the seeds first..last and checks each output.

@@ -1,9 +1,10 @@
 // The 3D rounding rule of the checker (within_ulp_of_segment / within_ulp_of_plane,
-// predicates.hpp; docs/ALGORITHM.md §5) against an independent oracle in 128-bit
-// integer arithmetic: segments and planes with small integer data, points a few
-// ulps around a correctly rounded point of them. All tested points lie in
-// [8, 32), where doubles are multiples of 2^-49, so scaling by 2^50 makes them
-// integers below 2^55 and every product below stays under 2^110.
+// predicates.hpp; docs/algorithm/quality.md "The validity checker") against an
+// independent oracle in 128-bit integer arithmetic: segments and planes with
+// small integer data, points a few ulps around a correctly rounded point of
+// them. All tested points lie in [8, 32), where doubles are multiples of 2^-49,
+// so scaling by 2^50 makes them integers below 2^55 and every product below
+// stays under 2^110.
 #include <gtest/gtest.h>
 
 #include <algorithm>

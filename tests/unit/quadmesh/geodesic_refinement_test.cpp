@@ -52,7 +52,8 @@ std::size_t mesh_count(int teeth, double w, double max_size) {
 // depend on w. The ratio therefore depends on how fine the teeth are meshed:
 // at the default size (teeth meshed with boxes of 1/8 to 1/4 of their width)
 // our 4-tooth comb gives 1.9 (printed below), with boxes capped at 1/64 of the
-// part 1.14 (asserted); docs/ALGORITHM.md §8.9 has the series.
+// part 1.14 (asserted); docs/algorithm/quad2d.md "Element count" has the
+// series.
 TEST(GeodesicRefinement, CombCountBarelyDependsOnSlotWidth) {
   const double max_size = 1.0 / 64;
   const std::size_t wide = mesh_count(4, 1e-2, max_size), narrow = mesh_count(4, 1e-4, max_size);

@@ -1,5 +1,6 @@
 // The 2D quadtree mesher on the data/2d corpus: every mesh passes the checker
-// and meets the documented angle bound (docs/ALGORITHM.md §8.8).
+// and meets the documented angle bound (docs/algorithm/quad2d.md "Angle
+// bound").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// Triangle measures against values derived by hand (thesis ch. 3; DESIGN.md §6).
+// Triangle measures against values derived by hand (thesis ch. 3;
+// docs/algorithm/quality.md "Quality measures").
 #include <gtest/gtest.h>
 
 #include <array>

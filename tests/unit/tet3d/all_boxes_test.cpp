@@ -5,8 +5,9 @@
 // subdivided octahedron with random vertex radii; every facet a triangle, so
 // planar exactly) and random rotated L-shaped prisms (a reflex edge; vertical
 // sides planar exactly). Every square shared by two boxes is also
-// triangulated from both sides by the square dispatcher and compared. The octree is built without the separating splits
-// (OctreeOptions::separate = false) for test time. Every mesh must pass
+// triangulated from both sides by the square dispatcher and compared. The
+// octree is built without the separating splits (OctreeOptions::separate =
+// false) for test time. Every mesh must pass
 // pqmesh::check_mesh against the domain (orientation, conformity, boundary =
 // dP subdivided, every input vertex, edge and facet recovered, volume). A
 // domain whose octree has a leaf no job covers (box_jobs problems, e.g. kind
@@ -304,7 +305,7 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
   };
   // Whether box vertex v ended nearer than h(v)/16 to the plane of the facet
   // that crossing x lies on: the second pass's clearance was refused or
-  // shortened there (warp.hpp acceptance rules; ALGORITHM.md §12.5).
+  // shortened there (warp.hpp acceptance rules; docs/algorithm/tet3d_warp.md).
   auto short_of_its_facet = [&](int x, int v) {
     const VertexKey& kx = m.keys[static_cast<std::size_t>(x)];
     const VertexKey& kv = m.keys[static_cast<std::size_t>(v)];
@@ -391,7 +392,8 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
         ++l6.under;
         // The sharp wedges this box holds: its edge (edge and two-facet
         // boxes), or every edge at its P vertex (vertex boxes; the thesis
-        // states t for protected edge boxes only, ALGORITHM.md §12.5).
+        // states t for protected edge boxes only,
+        // docs/algorithm/tet3d_warp.md).
         double sharpest = INFINITY;
         const auto try_wedge = [&](int edge) {
           const EdgeCone ec(d, edge);
@@ -569,7 +571,7 @@ void expect_lemma6(const Totals& t) {
   // Lemma 6 in the thesis's form: every pair closer than h/16 is a sharp-edge
   // pair with d >= k1 h a, or one of the two forms where our warp may stop
   // short of the thesis's clearances (the side rule's refusals), each held
-  // to the old flat floor 0.0015 h: a crossing with a box vertex or ring
+  // to a flat floor of 0.0015 h: a crossing with a box vertex or ring
   // segment left short of that facet or edge (measured 0.0051 h, stars), and
   // two crossings of one facet from a box vertex left short of it (0.0106 h,
   // stars).
@@ -590,12 +592,12 @@ void expect_lemma6(const Totals& t) {
 // centres moved with their corners), vertex 173 / 2,944, two-facet 375 /
 // 3,529. Edge boxes get no aspect floor: an edge E clipping a
 // box within h/8 of a box edge has its two Case B vertices on the prewarped
-// faces, as close as E is to that box edge (Lemma 6 fails there; ALGORITHM.md
-// §12.5): warped 11,140 (stars). Putting them on the warped squares
-// (warped_crossing.hpp, not yet used by cut_square_edge.cpp) measured 1,636;
-// choosing the apex along E (facet_boxes.hpp, when the midpoint is nearly
-// in the plane of a face triangle) measured 1,520 (stars; worst of the random tetrahedra 384,
-// was 523): the ceiling below is that measurement, rounded up.
+// faces, as close as E is to that box edge (Lemma 6 fails there;
+// docs/algorithm/tet3d_warp.md): warped 11,140 (stars). Putting them on the warped squares
+// (warped_crossing.hpp, not yet used by cut_square_edge.cpp) measured 1,636; choosing the
+// apex along E (facet_boxes.hpp, when the midpoint is nearly in the plane of a face triangle)
+// measured 1,520 (stars; worst of the random tetrahedra 384, was 523): the ceiling below is
+// that measurement, rounded up.
 void expect_warp_floors(const Totals& t) {
   if (!t.warp) return;
   EXPECT_GT(t.warped, 0);
@@ -674,7 +676,7 @@ TEST_P(AllBoxes, SeparatedOctreeTetrahedron) {
   expect_warp_floors(t);
 }
 
-// Lemma 6 on the corpus (docs/ALGORITHM.md §12.5): tet_mesh's octree
+// Lemma 6 on the corpus (docs/algorithm/tet3d_warp.md): tet_mesh's octree
 // (separating splits, generic grid), warped; prints the pairs under h/16
 // (Lemma6Pairs). A measurement, run by hand:
 // test_tet3d --gtest_also_run_disabled_tests --gtest_filter='*CorpusLemma6*'
@@ -689,8 +691,8 @@ TEST(AllBoxesProbe, DISABLED_CorpusLemma6) {
 }
 
 // Lemma 6 on the corpus models with sharp or crowded features (the others
-// have no pair under h/16: ALGORITHM.md §12.5 (7)), on tet_mesh's octree
-// (separating splits, generic grid), warped.
+// have no pair under h/16: docs/algorithm/tet3d_warp.md "Lemma 6"), on
+// tet_mesh's octree (separating splits, generic grid), warped.
 class CorpusLemma6 : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CorpusLemma6, PairsUnderHOver16AreSharpOrLeftShort) {

@@ -41,10 +41,7 @@ namespace {
 
 // The octree without the separating splits of §4.1.7 steps 6 and 9
 // (OctreeOptions::separate): ten times fewer leaves, so these box-meshing
-// tests stay fast. (With the splits the unwarped facet-box mesh of
-// star_vertex used to be non-conforming: the corner set held only the leaves
-// meeting P, so the two sides of a face could cut it into different squares;
-// fixed, see DISABLED_StarVertexUnwarped below.)
+// tests stay fast (with the splits: DISABLED_StarVertexUnwarped below).
 mv3d::OctreeOptions unseparated() {
   mv3d::OctreeOptions o;
   o.separate = false;
@@ -296,9 +293,10 @@ TEST_P(FacetBoxCorpus, PartialMeshIsConforming) {
   check_facet_boxes(std::get<0>(GetParam()), std::get<1>(GetParam()), unseparated());
 }
 
-// The octree with the separating splits (689,684 tets). It used to leave 120
-// interior triangles on one tetrahedron; it passes since CornerSet(builder)
-// takes the corners of every leaf (box_faces.cpp). Disabled for time (10 s).
+// The octree with the separating splits (689,684 tets): the partial mesh is
+// conforming because CornerSet(builder) takes the corners of every leaf
+// (box_faces.cpp), so both sides of a face cut it into the same squares.
+// Disabled for time (10 s).
 TEST(FacetBoxCorpusSeparated, DISABLED_StarVertexUnwarped) { check_facet_boxes("star_vertex.poly", false, {}); }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, FacetBoxCorpus,

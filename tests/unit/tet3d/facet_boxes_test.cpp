@@ -7,7 +7,8 @@
 //     hanging vertex, a closed manifold boundary;
 //   * every boundary triangle lies on a plane of the root cube (exact
 //     coordinates) or has its three vertices within an ulp of F's plane
-//     (the rounding rule of ALGORITHM.md §12.2), and F carries some;
+//     (the rounding rule of docs/algorithm/tet3d_boxes.md "Vertex identities"),
+//     and F carries some;
 //   * the volume equals that of cube ∩ half-space from the closed formula
 //     sum over cube corners v of (-1)^|v| max(0, d - n.v)^3 / (6 n1 n2 n3)
 //     (n > 0 after reflecting axes), relative 1e-9.

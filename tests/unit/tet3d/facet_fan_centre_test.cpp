@@ -1,21 +1,12 @@
 // §4.5.4, first case (box centre inside P): the fan of F ∩ b from "a
-// centrally located point" of it (facet_boxes.cpp, fan_centre). The
-// configuration of bounded random seed 58's worst box (docs/ALGORITHM.md
-// §12.5), rebuilt in a small tree: F has seed 58's normal and offset in
-// units of the box b = [1/2, 1] x [0, 1/2] x [0, 1/2] (h = 1/2) and clips
-// b's box edge x = 1/2, y = 1/2 (0.084 h from F at z = 0, 0.0068 h at
-// z = 1/2), so F ∩ b is a long thin quadrilateral along that edge; the
-// neighbour across face x = 1/2 is split twice, so F ∩ b has most of its
-// vertices on that face (crossings of the h/4 squares' edges and chord
-// midpoints) and two on face y = 1/2. The vertex mean of F ∩ b is pulled
-// towards face x = 1/2, near the line of a chord there (on seed 58 onto it:
-// a flat fan tetrahedron, aspect 16,433).
-// Here the mean's worst fan tetrahedron (recomputed below) is worse than
-// b's worst cone, so the rule of fan_centre applies. Asserted: the mesh is
+// centrally located point" of it (facet_boxes.cpp, fan_centre). Input: F
+// with bounded random seed 58's normal and offset in units of the box
+// b = [1/2, 1] x [0, 1/2] x [0, 1/2], clipping b's box edge x = 1/2,
+// y = 1/2, the neighbour across face x = 1/2 split twice (so F ∩ b's vertex
+// mean lies near the line of a chord on that face). Checked: the mesh is
 // valid (check_mesh_topology), the fan point lies on F, b's worst fan
-// tetrahedron is strictly better than the mean's and no warped point is
-// frozen (both fail with the mean: 132.6 after a rebuild that unwarps the
-// corner near F; with the chosen point 62.8, no rebuild).
+// tetrahedron is strictly better than the vertex mean's, and no warped
+// point is frozen.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -103,7 +94,8 @@ TEST(FacetFanCentre, ThinPolygonAlongABoxEdgeGetsACentralFanPoint) {
     v = T[3];
   }
   ASSERT_GE(chords.size(), 6u);
-  // g lies on F (rounded within an ulp of its plane, §12.2).
+  // g lies on F (rounded within an ulp of its plane, docs/algorithm/tet3d_boxes.md
+  // "Vertex identities").
   const Vec3 G = m.mesh.vertices[static_cast<std::size_t>(g)];
   EXPECT_TRUE(within_ulp_of_plane(G, dom.plc.vertices[0], dom.plc.vertices[1], dom.plc.vertices[2]));
   // The vertex mean of F ∩ b (the fan point before), settled onto F along

@@ -3,9 +3,9 @@
 // G of E, gets one copy per facet, each warped h/16 away from its own facet
 // (warp.hpp, warp_table.hpp); a cut by F constructs its crossing from F's
 // copy. Domains: a block with a thin V-shaped slot cut from its top (a prism
-// over an x-z polygon), the reflex edge E at the slot's bottom. Before the
-// copies such a vertex was left in place (reflex_left > 0): both tests below
-// fail then.
+// over an x-z polygon), the reflex edge E at the slot's bottom. With the
+// copies turned off (detail::BoxMeshTestHooks) such a vertex stays in place
+// (reflex_left > 0), which shows that the domain puts vertices in the slot.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -55,9 +55,10 @@ SlotRun run(const Domain3& d, bool separate, bool generic, bool copies) {
   const CornerSet corners(b);
   BoxMeshOptions mo;
   mo.warp = true;
-  mo.reflex_copies = copies;
+  detail::BoxMeshTestHooks hooks;
+  hooks.reflex_copies = copies;
   try {
-    r.mesh = mesh_boxes(b.tree(), corners, d, jobs.jobs, mo);
+    r.mesh = mesh_boxes(b.tree(), corners, d, jobs.jobs, mo, hooks);
   } catch (const std::exception& e) {
     std::printf("  threw: %s\n", e.what());
     return r;
@@ -101,7 +102,7 @@ TEST(ReflexSlotCopies, OneCopyPerFacetEachMovedOffItsOwnFacet) {
   ASSERT_LE(facet_distance(d, g, x0), 1.0 / 16);
   const std::vector<WarpCandidateRecord> cand = {{v, {f, g}, {wx, wy}, {}, 0, {}}};
 
-  // Without copies (the behaviour before them): v stays, counted.
+  // Without copies (reflex_copies false): v stays, counted.
   const WarpTable before = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, false);
   EXPECT_EQ(before.reflex_left, 1);
   EXPECT_EQ(before.find(v), nullptr);

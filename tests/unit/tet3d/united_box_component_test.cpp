@@ -1,14 +1,14 @@
 // A second component of P inside a united vertex box (thesis §4.1.3, §4.5.2;
-// ALGORITHM.md §12.4 "Duplicates"). A prism over a square with a narrow
-// straight slot (two prongs): at the slot mouth the far wall of the slot
+// docs/algorithm/tet3d_boxes.md "Duplicates"). A prism over a square with a
+// narrow straight slot (two prongs): at the slot mouth the far wall of the slot
 // passes through the united 2x2x2 box B of a mouth vertex v. Those leaves are
 // duplicates of B's cells holding the far prong; they get their own jobs, and
 // the vertex box must mesh only cone(v) ∩ B: the top facet, shared by both
 // prongs, crosses B's outer squares on both sides of the slot, and only v's
-// sector of it belongs to v's component (square_cases.cpp sector_meets).
-// Before: box_jobs reported those leaves; with jobs for them but the facet
-// tested by its triangles the vertex box also triangulated the far prong's
-// top on its squares (check_mesh: non-conforming).
+// sector of it belongs to v's component (square_cases.cpp sector_meets);
+// testing the facet by its triangles instead would also triangulate the far
+// prong's top on B's squares, and check_mesh would find the mesh
+// non-conforming.
 #include <gtest/gtest.h>
 
 #include <algorithm>

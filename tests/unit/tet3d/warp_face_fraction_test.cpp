@@ -1,5 +1,5 @@
 // The length of a face translation (warp.cpp, "Adaptive length";
-// docs/ALGORITHM.md §12.5, the case of suite random seed 135): the face of
+// docs/algorithm/tet3d_warp.md, the case of suite random seed 135): the face of
 // an edge box B translated away from B's P edge E takes the largest 2^-k
 // (k = 0..4) of (h/8) c n under which its ring points keep every exact side
 // decision of §4.3's acceptance rule. Here E runs at a small angle to the

@@ -1,5 +1,5 @@
 // §4.3 first pass with face translations (warp.hpp `edge_boxes`,
-// docs/ALGORITHM.md §12.5 "face translations", the case of bounded random
+// docs/algorithm/tet3d_warp.md "Face translations", the case of bounded random
 // seed 33): for an edge box B whose box edge l is close to B's P edge E, the
 // faces of B through l move along their outward normals by the components of
 // l's move, so a point of such a face far from E moves too and the face stays

@@ -1,7 +1,7 @@
 // §4.3 warping (warp.hpp): a box vertex near F whose every move along F's
 // normal is refused is moved along one of its ring segments' lines instead
-// (docs/ALGORITHM.md §12.5, "moves along a ring segment's line"; the case of
-// bounded random seed 58). The expected point is derived by hand below.
+// (docs/algorithm/tet3d_warp.md "Moves along a ring segment's line"; the case
+// of bounded random seed 58). The expected point is derived by hand below.
 #include <gtest/gtest.h>
 
 #include <array>

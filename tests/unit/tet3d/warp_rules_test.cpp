@@ -1,8 +1,9 @@
-// Warping rules of tet3d that the thesis leaves open (docs/ALGORITHM.md
-// §12.5), and §4.3's first pass on whole box edges: a face square's centre is carried with its corners (warp.hpp), a
-// move refused because it would cross another facet's plane is shortened
-// (warp.hpp), and a P edge crosses a square whose corners moved where it
-// meets their mean plane (warped_crossing.hpp). Expected points are derived by hand from the
+// Warping rules of tet3d that the thesis leaves open
+// (docs/algorithm/tet3d_warp.md), and §4.3's first pass on whole box edges: a
+// face square's centre is carried with its corners (warp.hpp), a move refused
+// because it would cross another facet's plane is shortened (warp.hpp), and a P
+// edge crosses a square whose corners moved where it meets their mean plane
+// (warped_crossing.hpp). Expected points are derived by hand from the
 // configuration (the warped squares below are planar quadrilaterals, so the
 // crossing is a line-plane intersection computed here independently).
 #include <gtest/gtest.h>

@@ -1,9 +1,8 @@
-// Harsh random polyhedra 101 and 103 (random_polyhedra_test.cpp) stopped with
-// InternalError "root offset ... too fine for exact box planes": the Tree
-// constructor (tree_impl.hpp) measured the extended box's plane range with a
-// bound that was wrong for negative origins (fixed in commit 1001f54), and
-// choose_generic_root_cube (root_cube.hpp) now applies the constructor's own
-// check to every candidate, so a returned root is accepted by construction.
+// choose_generic_root_cube (root_cube.hpp) applies the Tree constructor's own
+// check (tree_impl.hpp, the extended box's plane range, also for negative
+// origins) to every candidate, so a returned root is accepted by
+// construction: the constructor never throws "root offset ... too fine for
+// exact box planes" on it (as on harsh random polyhedra 101 and 103).
 // The boxes below are the domains' kind of placement: bounding boxes on the
 // negative side of 0, straddling it, and far from it, at several scales.
 // Every coordinate set is the box's two corners (so the chooser also has
