@@ -8,6 +8,8 @@
 set -euo pipefail
 
 packages=(g++ cmake make libgtest-dev libgmock-dev libgmp-dev python3 python3-numpy python3-meshio gmsh)
+# The Python module (python/) and its tests.
+packages+=(pybind11-dev python3-dev python3-pytest python3-vtk9)
 optional=()
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(tetgen libcgal-dev time)

@@ -170,7 +170,7 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
                                                  "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
-                                                 "--aligned-grid"};
+                                                 "--aligned-grid", "--compress"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
 
@@ -207,7 +207,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   // default: a 1 MiB threshold raised data/3d/plate_holes.poly's peak by about
   // 2 MB.)
   set_large_page_threshold(std::size_t{1} << 20);
-  const Args args(argv, {"--quiet", "--protect-edges"},
+  const Args args(argv, {"--quiet", "--protect-edges", "--compress"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   MeshRun run;
@@ -225,6 +225,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   // Unknown extension: ParseError(Unsupported), exit 2 before any work is done.
   run.format = forced ? *forced : mesh_format_from_path(run.output);
+  const bool compress = compress_option(args, run.format);
   const bool quiet = args.flag("--quiet");
 
   const Domain2 domain = make_domain(read_pslg(run.input));
@@ -247,6 +248,7 @@ int run_mesh(const std::vector<std::string>& argv) {
 
   WriteOptions write;
   write.format = run.format;
+  write.compress = compress;
   if (run.format == MeshFormat::Vtu) {
     write.cell_fields = memo_quality_fields(run.result.mesh);
     if (!quiet) angle_extremes(write.cell_fields, run.min_angle, run.max_angle);

@@ -171,6 +171,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   run.options.generic_grid = !args.flag("--aligned-grid");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);
   run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work
+  const bool compress = compress_option(args, run.format);
   if (run.format == MeshFormat::Svg) throw UsageError("a 3D mesh cannot be written as .svg");
   const bool quiet = args.flag("--quiet");
 
@@ -198,6 +199,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   start = Clock::now();
   WriteOptions write;
   write.format = run.format;
+  write.compress = compress;
   if (run.format == MeshFormat::Vtu) write.cell_fields = quality_fields(run.result.mesh);
   write_mesh(run.result.mesh, run.output, write);
   run.seconds_write = seconds_since(start);

@@ -28,7 +28,8 @@
 namespace pqmesh::cli {
 
 int run_mesh_no_steiner(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass"},
+  const Args args(argv, {"--quiet", "--no-boundary-steiner", "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
+                   "--compress"},
                   {"-o", "--output", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   const std::string input = args.positional()[0];
@@ -46,6 +47,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   options.quality_pass = !args.flag("--no-quality-pass");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   const MeshFormat format = forced ? *forced : mesh_format_from_path(output);
+  const bool compress = compress_option(args, format);
   const bool quiet = args.flag("--quiet");
 
   const Domain2 domain = make_domain(read_pslg(input));
@@ -56,6 +58,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   if (!valid_or_reported(check, "the no-boundary-Steiner triangulation of " + input)) return kExitInternal;
   WriteOptions write;
   write.format = format;
+  write.compress = compress;
   if (format == MeshFormat::Vtu) write.cell_fields = quality_fields(result.mesh);
   write_mesh(result.mesh, output, write);
   if (quiet) return kExitOk;

@@ -85,8 +85,9 @@ PhysicalGroups make_physical_groups(const std::vector<int>& markers, std::size_t
 // Format entry points (one file each).
 template <class M>
 void write_vtu(const M& mesh, const std::string& path, const WriteOptions& options);
+enum class GmshLayout { Ascii41, Ascii22, Binary41 };
 template <class M>
-void write_gmsh(const M& mesh, const std::string& path, const WriteOptions& options, bool v22);
+void write_gmsh(const M& mesh, const std::string& path, GmshLayout layout);
 template <class M>
 void write_medit(const M& mesh, const std::string& path);
 template <class M>

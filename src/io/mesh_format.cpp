@@ -11,6 +11,7 @@ const char* to_string(MeshFormat format) {
   switch (format) {
     case MeshFormat::Vtu: return "vtu";
     case MeshFormat::Msh41: return "msh41";
+    case MeshFormat::Msh41Binary: return "msh41b";
     case MeshFormat::Msh22: return "msh22";
     case MeshFormat::Medit: return "medit";
     case MeshFormat::TetgenNodeEle: return "tetgen";
@@ -32,8 +33,9 @@ void write_any(const M& mesh, const std::string& path, const WriteOptions& optio
   detail::check_for_write(mesh, options);
   switch (format) {
     case MeshFormat::Vtu: detail::write_vtu(mesh, path, options); return;
-    case MeshFormat::Msh41: detail::write_gmsh(mesh, path, options, false); return;
-    case MeshFormat::Msh22: detail::write_gmsh(mesh, path, options, true); return;
+    case MeshFormat::Msh41: detail::write_gmsh(mesh, path, detail::GmshLayout::Ascii41); return;
+    case MeshFormat::Msh41Binary: detail::write_gmsh(mesh, path, detail::GmshLayout::Binary41); return;
+    case MeshFormat::Msh22: detail::write_gmsh(mesh, path, detail::GmshLayout::Ascii22); return;
     case MeshFormat::Medit: detail::write_medit(mesh, path); return;
     case MeshFormat::TetgenNodeEle: detail::write_tetgen(mesh, path); return;
     case MeshFormat::Svg:
@@ -50,6 +52,7 @@ detail::RawMesh read_any(const std::string& path, int dim) {
   switch (mesh_format_from_path(path)) {
     case MeshFormat::Vtu: return detail::read_vtu(path, dim);
     case MeshFormat::Msh41:
+    case MeshFormat::Msh41Binary:
     case MeshFormat::Msh22: return detail::read_gmsh(path, dim);
     case MeshFormat::Medit: return detail::read_medit(path, dim);
     case MeshFormat::TetgenNodeEle: return detail::read_tetgen(path, dim);

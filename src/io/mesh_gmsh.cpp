@@ -1,5 +1,6 @@
 // Gmsh MSH 4.1 and 2.2, ASCII (reference: the "MSH file format" chapter of
-// the Gmsh manual). Layout written here:
+// the Gmsh manual); binary 4.1 is written by mesh_gmsh_binary.cpp with the
+// same sections and order. Layout written here:
 //   $PhysicalNames  one group per (dimension, marker), named "marker <m>";
 //                   physical tags follow PhysicalGroups (mesh_common.hpp).
 //   $Entities (4.1) one entity per (dimension, marker): curves (2D) or
@@ -25,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "io/gmsh_common.hpp"
 #include "io/mesh_common.hpp"
 #include "io/mesh_input.hpp"
 #include "io/mesh_output.hpp"
@@ -33,43 +35,7 @@ namespace pqmesh::detail {
 
 namespace {
 
-constexpr int kLine = 1, kTriangle = 2, kTetrahedron = 4, kPoint = 15;
-
-// Items (elements or boundary items) in entity order: a counting sort by
-// entity that keeps index order inside each entity.
-std::vector<std::size_t> order_by_entity(const PhysicalGroups& groups, const std::vector<int>& markers,
-                                         std::size_t count, std::vector<std::size_t>& block_sizes) {
-  block_sizes.assign(groups.markers.size(), 0);
-  std::vector<int> entity(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    entity[i] = groups.entity_of(marker_or_zero(markers, i)) - 1;
-    ++block_sizes[entity[i]];
-  }
-  std::vector<std::size_t> start(groups.markers.size() + 1, 0);
-  for (std::size_t g = 0; g < groups.markers.size(); ++g) start[g + 1] = start[g] + block_sizes[g];
-  std::vector<std::size_t> order(count);
-  for (std::size_t i = 0; i < count; ++i) order[start[entity[i]]++] = i;
-  return order;
-}
-
-void put_physical_names(BufferedWriter& out, const PhysicalGroups& faces, int face_dim, const PhysicalGroups& cells,
-                        int cell_dim) {
-  out.put("$PhysicalNames\n").put_int(static_cast<std::int64_t>(faces.markers.size() + cells.markers.size()));
-  out.put('\n');
-  for (const auto* groups : {&faces, &cells}) {
-    const int dim = groups == &faces ? face_dim : cell_dim;
-    for (std::size_t g = 0; g < groups->markers.size(); ++g) {
-      out.put_int(dim).put(' ').put_int(groups->physical_tags[g]).put(" \"marker ");
-      out.put_int(groups->markers[g]).put("\"\n");
-    }
-  }
-  out.put("$EndPhysicalNames\n");
-}
-
-void put_data_header(BufferedWriter& out, const char* section, const std::string& name, std::size_t count) {
-  out.put('$').put(section).put("\n1\n\"").put(name).put("\"\n1\n0\n3\n0\n1\n");
-  out.put_int(static_cast<std::int64_t>(count)).put('\n');
-}
+using namespace gmsh;
 
 template <class M>
 void write_body(const M& mesh, BufferedWriter& out, bool v22) {
@@ -112,15 +78,8 @@ void write_body(const M& mesh, BufferedWriter& out, bool v22) {
     out.put("$EndElements\n");
   } else {
     // Bounding box shared by every entity.
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      if (nv == 0) break;
-      lo[k] = hi[k] = coord(mesh.vertices[0], k);
-      for (const auto& p : mesh.vertices) {
-        lo[k] = std::min(lo[k], coord(p, k));
-        hi[k] = std::max(hi[k], coord(p, k));
-      }
-    }
+    double lo[3], hi[3];
+    bounding_box(mesh, lo, hi);
     // The nodes live in element entity 1, which must exist even without elements.
     const std::size_t num_cell_entities = std::max<std::size_t>(cell_groups.markers.size(), nv > 0 ? 1 : 0);
     std::size_t counts[4] = {0, 0, 0, 0};
@@ -319,7 +278,8 @@ struct GmshReader {
     } else {
       in.fail(ErrorCode::Unsupported, "MSH version " + std::string(version) + " (only 4.1 and 2.2 are read)");
     }
-    if (file_type != 0) in.fail(ErrorCode::Unsupported, "binary MSH files are not read (write ASCII)");
+    if (file_type != 0)
+      in.fail(ErrorCode::Unsupported, "binary MSH files are not read (convert with `gmsh FILE -0 -format msh41`)");
     in.expect("$EndMeshFormat");
   }
 
@@ -588,16 +548,19 @@ struct GmshReader {
 }  // namespace
 
 template <class M>
-void write_gmsh(const M& mesh, const std::string& path, const WriteOptions& /*options*/, bool v22) {
+void write_gmsh(const M& mesh, const std::string& path, GmshLayout layout) {
   AtomicFile file(path);
   BufferedWriter out(file.file(), path);
-  write_body(mesh, out, v22);
+  if (layout == GmshLayout::Binary41)
+    gmsh::write_binary41(mesh, out);
+  else
+    write_body(mesh, out, layout == GmshLayout::Ascii22);
   out.flush();
   file.commit();
 }
 
-template void write_gmsh(const TriMesh2&, const std::string&, const WriteOptions&, bool);
-template void write_gmsh(const TetMesh3&, const std::string&, const WriteOptions&, bool);
+template void write_gmsh(const TriMesh2&, const std::string&, GmshLayout);
+template void write_gmsh(const TetMesh3&, const std::string&, GmshLayout);
 
 RawMesh read_gmsh(const std::string& path, int dim) {
   GmshReader reader(path, dim);

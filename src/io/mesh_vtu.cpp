@@ -1,6 +1,7 @@
 // VTK XML UnstructuredGrid (.vtu), version 1.0, little endian, UInt64 block
 // headers. Only the elements are written (VTK type 5 triangle, 10 tetra), as
-// one cell block; boundary edges/faces are not part of a .vtu. Arrays:
+// one cell block; boundary edges/faces are not part of a .vtu. Arrays, in
+// document order:
 //   PointData "vertex_marker" (Int32, when present)
 //   CellData  "marker" (Int32, when present), then every CellField (Float64,
 //             or Float32 when the field asks for single precision)
@@ -8,7 +9,31 @@
 //   every offset, at most nodes * cells, fits in 31 bits, else Int64; VTK XML
 //   allows any integer type there), types (UInt8).
 // binary = true: every array is appended raw after "_" in <AppendedData>,
-// each preceded by its byte count as UInt64; false: inline ASCII.
+// each preceded by its byte count as UInt64 (compress = true: as a
+// vtkZLibDataCompressor array instead, vtu_compression.hpp); false: inline
+// ASCII.
+//
+// The appended arrays are stored in REVERSE document order (the last
+// DataArray of the XML at offset 0). Readers locate arrays by offset, so VTK
+// does not care; the order is for meshio 5, whose raw-appended reader
+// (_parse_raw_binary) walks the blocks in file order and, for the block at
+// raw offset i, takes the FIRST DataArray in document order whose offset
+// attribute is "i", then overwrites that attribute with the array's offset in
+// a base64 re-encoding (about 4/3 of the raw offset). With blocks in
+// document order, an array already re-encoded can carry a rewritten offset
+// equal to the raw offset of a later block; meshio then rewrites the wrong
+// array, and the later array decodes from the wrong place ("size of the data
+// array 'Points' ... doesn't fit the number of components 3", "buffer size
+// must be a multiple of element size"): whether it happens depends on the
+// array sizes, so some meshes failed and others did not. In reverse order
+// every array already rewritten comes after the one being looked up in the
+// document, so the first match is always the right one.
+//
+// meshio also takes the first "</AppendedData>" in the file as the end of
+// the data, so raw data containing those 15 bytes would cut it short: this
+// cannot come from coordinates, connectivity, offsets or types of any mesh
+// pqmesh can hold, only from Int32 markers or field values chosen to spell
+// the text (VTK reads such a file correctly).
 // VTK's tetrahedron has positive volume for pqmesh's orientation (its
 // reference tetrahedron is (0,0,0), (1,0,0), (0,1,0), (0,0,1)).
 #include <algorithm>
@@ -16,8 +41,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +54,7 @@
 #include "io/mesh_common.hpp"
 #include "io/mesh_input.hpp"
 #include "io/mesh_output.hpp"
+#include "io/vtu_compression.hpp"
 
 namespace pqmesh::detail {
 
@@ -143,8 +173,30 @@ void put_raw_array(const M& mesh, const WriteOptions& options, int array, const 
   }, out);
 }
 
+// Array k as a vtkZLibDataCompressor array (vtu_compress_zlib): put_bytes(k,
+// writer) writes its uncompressed bytes, which are gathered in memory first.
+template <class PutBytes>
+std::string compressed_array(std::size_t k, const PutBytes& put_bytes, const std::string& path) {
+  struct Memory {
+    char* data = nullptr;
+    std::size_t size = 0;
+    std::FILE* file = nullptr;
+    ~Memory() {
+      if (file) std::fclose(file);
+      std::free(data);
+    }
+  } memory;
+  memory.file = open_memstream(&memory.data, &memory.size);
+  if (memory.file == nullptr) throw_write_error(path, errno);
+  BufferedWriter to(memory.file, path);
+  put_bytes(k, to);
+  to.flush();
+  if (std::fflush(memory.file) != 0) throw_write_error(path, errno);
+  return vtu_compress_zlib(memory.data, memory.size);
+}
+
 template <class M>
-void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options) {
+void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options, const std::string& path) {
   using T = MeshTraits<M>;
   constexpr int D = T::dim;
   constexpr int N = T::cell_nodes;
@@ -154,28 +206,28 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
   const bool binary = options.binary;
 
   // Scalar i of each array, in the order they are written, as spec.scalar.
-  auto put_value = [&](int array, const ArraySpec& spec, std::size_t i, bool raw) {
+  auto put_value = [&](BufferedWriter& w, int array, const ArraySpec& spec, std::size_t i, bool raw) {
     auto emit_int = [&](std::int64_t v) {
       if (!raw) {
-        out.put_int(v);
+        w.put_int(v);
       } else if (spec.scalar == Scalar::Int32) {
-        out.put_le(static_cast<std::int32_t>(v));
+        w.put_le(static_cast<std::int32_t>(v));
       } else if (spec.scalar == Scalar::Int64) {
-        out.put_le(v);
+        w.put_le(v);
       } else {
-        out.put_le(static_cast<std::uint8_t>(v));
+        w.put_le(static_cast<std::uint8_t>(v));
       }
     };
     auto emit_real = [&](double v) {
       if (spec.scalar == Scalar::Float32) {
         if (raw)
-          out.put_le(single_precision(v));
+          w.put_le(single_precision(v));
         else
-          out.put_float(single_precision(v));
+          w.put_float(single_precision(v));
       } else if (raw) {
-        out.put_le(v);
+        w.put_le(v);
       } else {
-        out.put_double(v);
+        w.put_double(v);
       }
     };
     const int num_fields = static_cast<int>(options.cell_fields.size());
@@ -209,11 +261,24 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
   arrays.push_back({base + 2, {"offsets", index_scalar, 1, nc}});
   arrays.push_back({base + 3, {"types", Scalar::UInt8, 1, nc}});
 
-  std::vector<std::uint64_t> offsets;
+  // The bytes of array k as stored uncompressed (without the size header).
+  auto put_array_bytes = [&](std::size_t k, BufferedWriter& to) {
+    const auto& [number, spec] = arrays[k];
+    if constexpr (std::endian::native == std::endian::little) {
+      put_raw_array(mesh, options, number, spec, to);
+    } else {
+      for (std::size_t i = 0; i < spec.count; ++i) put_value(to, number, spec, i, true);
+    }
+  };
+  const bool compress = binary && options.compress;
+  std::vector<std::string> packed(compress ? arrays.size() : 0);  // the compressed arrays
+  for (std::size_t k = 0; k < packed.size(); ++k) packed[k] = compressed_array(k, put_array_bytes, path);
+  // Offsets in reverse document order (header comment).
+  std::vector<std::uint64_t> offsets(arrays.size());
   std::uint64_t offset = 0;
-  for (const auto& [number, spec] : arrays) {
-    offsets.push_back(offset);
-    offset += 8 + spec.count * scalar_size(spec.scalar);
+  for (std::size_t k = arrays.size(); k-- > 0;) {
+    offsets[k] = offset;
+    offset += compress ? packed[k].size() : 8 + arrays[k].second.count * scalar_size(arrays[k].second.scalar);
   }
 
   auto put_array = [&](std::size_t k) {
@@ -226,14 +291,15 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
     }
     out.put(" format=\"ascii\">\n");
     for (std::size_t i = 0; i < spec.count; ++i) {
-      put_value(arrays[k].first, spec, i, false);
+      put_value(out, arrays[k].first, spec, i, false);
       out.put((i + 1) % 12 == 0 || i + 1 == spec.count ? '\n' : ' ');
     }
     out.put("</DataArray>\n");
   };
 
   out.put("<?xml version=\"1.0\"?>\n");
-  out.put("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n");
+  out.put("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"");
+  out.put(compress ? " compressor=\"vtkZLibDataCompressor\">\n" : ">\n");
   out.put("<UnstructuredGrid>\n<Piece NumberOfPoints=\"").put_int(static_cast<std::int64_t>(nv));
   out.put("\" NumberOfCells=\"").put_int(static_cast<std::int64_t>(nc)).put("\">\n");
   std::size_t k = 0;
@@ -257,13 +323,14 @@ void write_body(const M& mesh, BufferedWriter& out, const WriteOptions& options)
   out.put("</Cells>\n</Piece>\n</UnstructuredGrid>\n");
   if (binary) {
     out.put("<AppendedData encoding=\"raw\">\n_");
-    for (const auto& [number, spec] : arrays) {
-      out.put_le(static_cast<std::uint64_t>(spec.count * scalar_size(spec.scalar)));
-      if constexpr (std::endian::native == std::endian::little) {
-        put_raw_array(mesh, options, number, spec, out);
-      } else {
-        for (std::size_t i = 0; i < spec.count; ++i) put_value(number, spec, i, true);
+    for (std::size_t a = arrays.size(); a-- > 0;) {
+      if (compress) {
+        out.put(packed[a]);
+        continue;
       }
+      const ArraySpec& spec = arrays[a].second;
+      out.put_le(static_cast<std::uint64_t>(spec.count * scalar_size(spec.scalar)));
+      put_array_bytes(a, out);
     }
     out.put("\n</AppendedData>\n");
   }
@@ -297,11 +364,14 @@ class VtuReader {
   void parse_xml(std::size_t end);
   std::vector<double> values(const XmlArray& a, std::size_t expected);
   std::vector<unsigned char> decode_base64(std::string_view text, std::size_t header_bytes, int line) const;
+  std::vector<unsigned char> binary_payload(const XmlArray& a, std::size_t expected_bytes, std::size_t value_size);
+  std::vector<unsigned char> compressed_payload(const XmlArray& a, std::size_t expected_bytes);
 
   std::string path_;
   int dim_;
   std::string text_;
   std::string header_type_ = "UInt32";
+  VtuCompressor compressor_ = VtuCompressor::None;
   std::string appended_encoding_;
   std::size_t appended_start_ = 0;  // first byte after '_'
   std::int64_t num_points_ = -1, num_cells_ = -1;
@@ -349,8 +419,11 @@ void VtuReader::parse_xml(std::size_t end) {
       seen_root = true;
       if (attribute(tag, "type") != "UnstructuredGrid")
         fail(ErrorCode::Unsupported, "VTK file type '" + std::string(attribute(tag, "type")) + "'", line);
-      if (!attribute(tag, "compressor").empty())
-        fail(ErrorCode::Unsupported, "compressed VTU data (write without compression)", line);
+      const std::string_view compressor = attribute(tag, "compressor");
+      if (!vtu_compressor_from_name(compressor, compressor_))
+        fail(ErrorCode::Unsupported, "VTU compressor '" + std::string(compressor) +
+                                         "' (vtkZLibDataCompressor, vtkLZ4DataCompressor and vtkLZMADataCompressor are read)",
+             line);
       const std::string_view order = attribute(tag, "byte_order");
       if (!order.empty() && order != "LittleEndian") fail(ErrorCode::Unsupported, "big-endian VTU data", line);
       if (!attribute(tag, "header_type").empty()) header_type_ = std::string(attribute(tag, "header_type"));
@@ -392,7 +465,9 @@ void VtuReader::parse_xml(std::size_t end) {
       } else if (!self_closing) {
         const std::size_t end_tag = text.find("</DataArray>", pos);
         if (end_tag == std::string_view::npos) fail(ErrorCode::Truncated, "DataArray is not closed", line);
-        a.content = text.substr(pos, end_tag - pos);
+        // The data ends at the first '<': VTK puts <InformationKey> elements
+        // after the numbers, inside the DataArray.
+        a.content = text.substr(pos, std::min(text.find('<', pos), end_tag) - pos);
         pos = end_tag + 12;
       }
       if (!a.section.empty()) arrays_.push_back(std::move(a));
@@ -435,6 +510,77 @@ std::vector<unsigned char> VtuReader::decode_base64(std::string_view text, std::
   return bytes;
 }
 
+// The data bytes of a binary (inline base64) or appended (raw or base64)
+// DataArray, without the size header; compressed arrays decompressed. The
+// byte count must be a multiple of value_size; whether it matches
+// expected_bytes is checked by the caller (except for compressed arrays,
+// whose header must announce exactly expected_bytes).
+std::vector<unsigned char> VtuReader::binary_payload(const XmlArray& a, std::size_t expected_bytes,
+                                                     std::size_t value_size) {
+  if (a.format != "binary" && a.format != "appended")
+    fail(ErrorCode::Unsupported, "DataArray format '" + a.format + "'", a.line);
+  if (a.format == "appended" && appended_encoding_.empty())
+    fail(ErrorCode::Syntax, "appended DataArray without <AppendedData>", a.line);
+  if (compressor_ != VtuCompressor::None) return compressed_payload(a, expected_bytes);
+  const std::size_t header = header_type_ == "UInt64" ? 8 : 4;
+  std::vector<unsigned char> bytes;
+  if (a.format == "binary") {
+    bytes = decode_base64(a.content, SIZE_MAX, a.line);
+  } else {
+    const std::size_t start = appended_start_ + static_cast<std::size_t>(a.offset);
+    if (start > text_.size()) fail(ErrorCode::Truncated, "appended offset beyond the end of the file", a.line);
+    if (appended_encoding_ == "raw") {
+      if (start + header > text_.size()) fail(ErrorCode::Truncated, "appended data ends early", a.line);
+      std::uint64_t size = 0;
+      for (std::size_t k = 0; k < header; ++k)
+        size |= static_cast<std::uint64_t>(static_cast<unsigned char>(text_[start + k])) << (8 * k);
+      if (size > text_.size() - start - header) fail(ErrorCode::Truncated, "appended data ends early", a.line);
+      bytes.assign(text_.begin() + static_cast<std::ptrdiff_t>(start),
+                   text_.begin() + static_cast<std::ptrdiff_t>(start + header + size));
+    } else {
+      bytes = decode_base64(std::string_view(text_).substr(start), header + expected_bytes, a.line);
+    }
+  }
+  if (bytes.size() < header) fail(ErrorCode::Truncated, "binary DataArray without header", a.line);
+  std::uint64_t size = 0;
+  for (std::size_t k = 0; k < header; ++k) size |= static_cast<std::uint64_t>(bytes[k]) << (8 * k);
+  if (size % value_size != 0 || size > bytes.size() - header)
+    fail(ErrorCode::WrongCount, "binary DataArray '" + a.name + "' has a bad byte count", a.line);
+  bytes.erase(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(header));
+  bytes.resize(static_cast<std::size_t>(size));
+  return bytes;
+}
+
+// A compressed array (vtu_compression.hpp): inline base64, appended raw or
+// appended base64. Only the bytes the header accounts for are decoded.
+std::vector<unsigned char> VtuReader::compressed_payload(const XmlArray& a, std::size_t expected_bytes) {
+  const std::size_t header = header_type_ == "UInt64" ? 8 : 4;
+  const VtuArraySite site{path_, a.line, a.name};
+  if (a.format == "appended" && appended_encoding_ == "raw") {
+    const std::size_t start = appended_start_ + static_cast<std::size_t>(a.offset);
+    if (start > text_.size()) fail(ErrorCode::Truncated, "appended offset beyond the end of the file", a.line);
+    const std::span<const unsigned char> rest(reinterpret_cast<const unsigned char*>(text_.data()) + start,
+                                              text_.size() - start);
+    const std::size_t n = vtu_compressed_array_bytes(rest, header, rest.size(), site);
+    return vtu_decompress(rest.first(n), header, compressor_, expected_bytes, site);
+  }
+  std::string_view text = a.content;
+  if (a.format == "appended") {
+    const std::size_t start = appended_start_ + static_cast<std::size_t>(a.offset);
+    if (start > text_.size()) fail(ErrorCode::Truncated, "appended offset beyond the end of the file", a.line);
+    text = std::string_view(text_).substr(start);
+  }
+  // base64: 3 bytes per 4 characters bound what the text can hold.
+  const std::size_t available = text.size() / 4 * 3 + 3;
+  std::vector<unsigned char> bytes = decode_base64(text, header, a.line);
+  const std::size_t head = vtu_compressed_header_bytes(bytes, header, available, site);
+  bytes = decode_base64(text, head, a.line);
+  const std::size_t n = vtu_compressed_array_bytes(bytes, header, available, site);
+  bytes = decode_base64(text, n, a.line);
+  if (bytes.size() < n) fail(ErrorCode::Truncated, "compressed DataArray '" + a.name + "' ends early", a.line);
+  return vtu_decompress(std::span<const unsigned char>(bytes).first(n), header, compressor_, expected_bytes, site);
+}
+
 std::vector<double> VtuReader::values(const XmlArray& a, std::size_t expected) {
   struct TypeInfo {
     const char* name;
@@ -469,36 +615,10 @@ std::vector<double> VtuReader::values(const XmlArray& a, std::size_t expected) {
       p = q;
     }
   } else {
-    const std::size_t header = header_type_ == "UInt64" ? 8 : 4;
-    std::vector<unsigned char> bytes;
-    if (a.format == "binary") {
-      bytes = decode_base64(a.content, SIZE_MAX, a.line);
-    } else if (a.format == "appended") {
-      if (appended_encoding_.empty()) fail(ErrorCode::Syntax, "appended DataArray without <AppendedData>", a.line);
-      const std::size_t start = appended_start_ + static_cast<std::size_t>(a.offset);
-      if (start > text_.size()) fail(ErrorCode::Truncated, "appended offset beyond the end of the file", a.line);
-      if (appended_encoding_ == "raw") {
-        if (start + header > text_.size()) fail(ErrorCode::Truncated, "appended data ends early", a.line);
-        std::uint64_t size = 0;
-        for (std::size_t k = 0; k < header; ++k)
-          size |= static_cast<std::uint64_t>(static_cast<unsigned char>(text_[start + k])) << (8 * k);
-        if (size > text_.size() - start - header) fail(ErrorCode::Truncated, "appended data ends early", a.line);
-        bytes.assign(text_.begin() + static_cast<std::ptrdiff_t>(start),
-                     text_.begin() + static_cast<std::ptrdiff_t>(start + header + size));
-      } else {
-        bytes = decode_base64(std::string_view(text_).substr(start), header + expected * type->size, a.line);
-      }
-    } else {
-      fail(ErrorCode::Unsupported, "DataArray format '" + a.format + "'", a.line);
-    }
-    if (bytes.size() < header) fail(ErrorCode::Truncated, "binary DataArray without header", a.line);
-    std::uint64_t size = 0;
-    for (std::size_t k = 0; k < header; ++k) size |= static_cast<std::uint64_t>(bytes[k]) << (8 * k);
-    if (size % type->size != 0 || size > bytes.size() - header)
-      fail(ErrorCode::WrongCount, "binary DataArray '" + a.name + "' has a bad byte count", a.line);
-    const std::size_t n = static_cast<std::size_t>(size / type->size);
+    const std::vector<unsigned char> bytes = binary_payload(a, expected * type->size, type->size);
+    const std::size_t n = bytes.size() / type->size;
     for (std::size_t i = 0; i < n; ++i) {
-      const unsigned char* b = bytes.data() + header + i * type->size;
+      const unsigned char* b = bytes.data() + i * type->size;
       std::uint64_t bits = 0;
       for (std::size_t k = 0; k < type->size; ++k) bits |= static_cast<std::uint64_t>(b[k]) << (8 * k);
       double v = 0;
@@ -607,7 +727,7 @@ template <class M>
 void write_vtu(const M& mesh, const std::string& path, const WriteOptions& options) {
   AtomicFile file(path);
   BufferedWriter out(file.file(), path);
-  write_body(mesh, out, options);
+  write_body(mesh, out, options, path);
   out.flush();
   file.commit();
 }

@@ -126,11 +126,11 @@ def main():
     print("meshio", meshio.__version__)
     for stem, spec in (("square", SQUARE), ("cube", CUBE)):
         path = lambda ext: os.path.join(samples, stem + ext)  # noqa: E731
-        for ext in (".vtu", "_ascii.vtu"):
+        for ext in (".vtu", "_zlib.vtu", "_ascii.vtu"):
             for field in ("quality", "quality32"):  # Float64 and Float32 (single_precision) cell data
                 check_file(stem + ext, path(ext), spec, "marker", has_faces=False, vertex_key="vertex_marker",
                            field=field)
-        for ext in (".msh", "_22.msh"):
+        for ext in (".msh", "_41b.msh", "_22.msh"):
             check_file(stem + ext, path(ext), spec, "gmsh:physical", "gmsh:physical", vertex_key="vertex_marker",
                        physical=True)
         check_file(stem + ".mesh", path(".mesh"), spec, "medit:ref", "medit:ref", vertex_key="medit:ref")

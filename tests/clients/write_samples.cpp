@@ -2,7 +2,9 @@
 // tests (tests/clients/CMakeLists.txt).
 //   pqmesh_write_samples DIR           writes the sample square (2D) and cube
 //                                      (3D) of tests/unit/io_mesh/sample_meshes
-//                                      in every format into DIR
+//                                      in every format into DIR (.vtu raw,
+//                                      zlib and ASCII; .msh 4.1 ASCII and
+//                                      binary, 2.2; .mesh; .node)
 //   pqmesh_write_samples --read FILE D reads FILE as a 2D (D = 2) or 3D mesh
 //                                      and prints "vertices elements boundary"
 //                                      and the element markers, one line each
@@ -27,11 +29,16 @@ void write_all(const M& mesh, const std::filesystem::path& dir, const std::strin
   pqmesh::CellField field32{"quality32", field.values, true};
   options.cell_fields = {field, field32};
   pqmesh::write_mesh(mesh, (dir / (stem + ".vtu")).string(), options);
+  options.compress = true;
+  pqmesh::write_mesh(mesh, (dir / (stem + "_zlib.vtu")).string(), options);
+  options.compress = false;
   options.binary = false;
   pqmesh::write_mesh(mesh, (dir / (stem + "_ascii.vtu")).string(), options);
   pqmesh::write_mesh(mesh, (dir / (stem + ".msh")).string(), options);
   options.format = MeshFormat::Msh22;
   pqmesh::write_mesh(mesh, (dir / (stem + "_22.msh")).string(), options);
+  options.format = MeshFormat::Msh41Binary;
+  pqmesh::write_mesh(mesh, (dir / (stem + "_41b.msh")).string(), options);
   options.format.reset();
   pqmesh::write_mesh(mesh, (dir / (stem + ".mesh")).string(), options);
   pqmesh::write_mesh(mesh, (dir / (stem + ".node")).string(), options);

@@ -1,0 +1,125 @@
+// The two 2D meshers as `pqmesh mesh` runs them (cmd_mesh.cpp and, with
+// --no-boundary-steiner, cmd_mesh_nosteiner.cpp), with the GIL released; the
+// figures of the CLI's summary become attributes of the returned TriMesh.
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "pqmesh/alpha.hpp"
+#include "pqmesh/nosteiner.hpp"
+#include "pqmesh/quadmesh.hpp"
+#include "pqmesh/quadmesh_bound.hpp"
+#include "pqmesh/quality.hpp"
+
+namespace pqmesh::python {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+// A size-field file (read_size_field2: "x y size" lines) or a pair (points (K, 2), sizes (K,)).
+SizeField2 size_field2(py::handle obj) {
+  if (py::isinstance<py::str>(obj)) return read_size_field2(obj.cast<std::string>());
+  if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
+    throw py::value_error("size_field must be a file name or a pair (points, sizes)");
+  SizeField2 field;
+  field.points = to_points2(obj[py::int_(0)], "size_field points");
+  field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());
+  return field;
+}
+
+py::dict quad_stats(const QuadMeshStats& s) {
+  return py::dict(py::arg("leaves") = s.leaves, py::arg("duplicates") = s.duplicates,
+                  py::arg("outside_leaves") = s.outside_leaves, py::arg("splits_size") = s.splits_size,
+                  py::arg("splits_vertex") = s.splits_vertex, py::arg("splits_edge") = s.splits_edge,
+                  py::arg("splits_balance") = s.splits_balance, py::arg("splits_centering") = s.splits_centering,
+                  py::arg("splits_protection") = s.splits_protection, py::arg("vertex_boxes") = s.vertex_boxes,
+                  py::arg("centered") = s.centered, py::arg("warped") = s.warped,
+                  py::arg("edge_points") = s.edge_points, py::arg("refine_points") = s.refine_points,
+                  py::arg("refine_target_reached") = s.refine_target_reached);
+}
+
+py::object run_quad_mesh(std::shared_ptr<Domain2> domain, double max_size, py::object size_field, double refine_angle,
+                         bool protect_edges) {
+  QuadMeshOptions options;
+  options.max_size = max_size;
+  options.refine_angle_degrees = refine_angle;
+  options.protect_edges = protect_edges;
+  if (!size_field.is_none()) options.size_field = size_field2(size_field);
+  QuadMeshResult result;
+  AlphaResult alpha;
+  QualityReport quality;
+  double seconds = 0;
+  {
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    result = quad_mesh(*domain, options);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    alpha = compute_alpha(domain->pslg.vertices, domain->loops);
+    quality = quality_report(result.mesh);
+  }
+  const QuadMeshStats& s = result.stats;
+  py::object mesh = py::cast(std::make_shared<TriMesh2>(std::move(result.mesh)));
+  mesh.attr("domain") = domain;
+  mesh.attr("alpha") = alpha.degrees();
+  mesh.attr("angle_bound") = quad_mesh_angle_bound(alpha.degrees(), refine_angle);
+  mesh.attr("min_angle") = quality.min_angle.min;
+  mesh.attr("max_angle") = quality.max_angle.max;
+  mesh.attr("max_aspect_ratio") = quality.aspect_ratio.max;
+  mesh.attr("stats") = quad_stats(s);
+  mesh.attr("seconds") = py::dict(py::arg("tree") = s.seconds_tree, py::arg("points") = s.seconds_points,
+                                  py::arg("triangulate") = s.seconds_triangulate, py::arg("mesh") = seconds);
+  return mesh;
+}
+
+py::object run_no_steiner(std::shared_ptr<Domain2> domain, double refine_angle, bool keep_better_cdt, bool thesis_fans,
+                          bool quality_pass) {
+  NoSteinerOptions options;
+  options.r_mesh.refine_angle_degrees = refine_angle;
+  options.keep_better_cdt = keep_better_cdt;
+  options.thesis_fans = thesis_fans;
+  options.quality_pass = quality_pass;
+  NoSteinerResult result;
+  QualityReport quality;
+  {
+    py::gil_scoped_release release;
+    result = triangulate_without_boundary_steiner(*domain, options);
+    quality = quality_report(result.mesh);
+  }
+  const NoSteinerStats& s = result.stats;
+  py::object mesh = py::cast(std::make_shared<TriMesh2>(std::move(result.mesh)));
+  mesh.attr("domain") = domain;
+  mesh.attr("g") = s.g * kDegrees;
+  mesh.attr("upper_bound") = s.upper_bound * kDegrees;
+  mesh.attr("min_angle") = quality.min_angle.min;
+  mesh.attr("max_angle") = quality.max_angle.max;
+  mesh.attr("max_aspect_ratio") = quality.aspect_ratio.max;
+  mesh.attr("cdt_min_angle") = s.cdt_min_angle * kDegrees;
+  mesh.attr("path") = to_string(s.path);
+  mesh.attr("fallback_reason") = s.fallback_reason;
+  mesh.attr("stats") = py::dict(
+      py::arg("pipeline_path") = to_string(s.pipeline_path), py::arg("pipeline_min_angle") = s.pipeline_min_angle * kDegrees,
+      py::arg("construction_min_angle") = s.construction_min_angle * kDegrees, py::arg("ratio") = s.ratio,
+      py::arg("wedge_triangles") = s.wedge_triangles, py::arg("between_triangles") = s.between_triangles,
+      py::arg("r_triangles") = s.r_triangles, py::arg("cdt_triangles") = s.cdt_triangles,
+      py::arg("pass_flips") = s.pass_flips, py::arg("pass_removals") = s.pass_removals,
+      py::arg("pass_moves") = s.pass_moves, py::arg("pass_cavities") = s.pass_cavities);
+  mesh.attr("seconds") = py::dict(py::arg("bound") = s.seconds_bound, py::arg("q") = s.seconds_q,
+                                  py::arg("r") = s.seconds_r, py::arg("between") = s.seconds_between,
+                                  py::arg("pass") = s.seconds_pass, py::arg("verify") = s.seconds_verify,
+                                  py::arg("cdt") = s.seconds_cdt, py::arg("mesh") = s.seconds_total);
+  return mesh;
+}
+
+}  // namespace
+
+void bind_mesh2d(py::module_& m) {
+  m.def("quad_mesh", &run_quad_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
+        py::arg("refine_angle"), py::arg("protect_edges"), "quad_mesh(domain, options); see pqmesh.triangulate.");
+  m.def("triangulate_without_boundary_steiner", &run_no_steiner, py::arg("domain"), py::arg("refine_angle"),
+        py::arg("keep_better_cdt"), py::arg("thesis_fans"), py::arg("quality_pass"),
+        "triangulate_without_boundary_steiner(domain, options); see pqmesh.triangulate.");
+}
+
+}  // namespace pqmesh::python

@@ -1,0 +1,83 @@
+// tet_mesh as `pqmesh mesh` runs it on a 3D domain (cmd_mesh3.cpp): the mesh,
+// then alpha and the quality figures of the CLI's summary, all computed with
+// the GIL released. The figures become attributes of the returned TetMesh.
+#include <chrono>
+#include <memory>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "pqmesh/alpha.hpp"
+#include "pqmesh/quality.hpp"
+#include "pqmesh/tetmesh.hpp"
+
+namespace pqmesh::python {
+namespace {
+
+// (points (K, 3), sizes (K,)): the size asked for at x is min_i sizes[i] + |x - points[i]|.
+TetSizeField size_field3(py::handle obj) {
+  if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
+    throw py::value_error("size_field must be a pair (points, sizes)");
+  TetSizeField field;
+  field.points = to_points3(obj[py::int_(0)], "size_field points");
+  field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());
+  return field;
+}
+
+py::dict stats_dict(const TetMeshStats& s) {
+  py::dict per_kind;
+  for (int k = 0; k < kTetLeafKinds; ++k) per_kind[tet_leaf_kind_name(k)] = s.leaves_per_kind[static_cast<std::size_t>(k)];
+  return py::dict(py::arg("leaves") = s.leaves, py::arg("leaves_per_kind") = per_kind,
+                  py::arg("flush_leaves") = s.flush_leaves, py::arg("touching_leaves") = s.touching_leaves,
+                  py::arg("empty_jobs") = s.empty_jobs, py::arg("facet_jobs") = s.facet_jobs,
+                  py::arg("edge_jobs") = s.edge_jobs, py::arg("vertex_jobs") = s.vertex_jobs,
+                  py::arg("two_facet_jobs") = s.two_facet_jobs, py::arg("facet_inside") = s.facet_inside,
+                  py::arg("facet_on") = s.facet_on, py::arg("facet_beyond") = s.facet_beyond,
+                  py::arg("warped") = s.warped, py::arg("warp_rebuilds") = s.warp_rebuilds,
+                  py::arg("worst_box_rounds") = s.worst_box_rounds, py::arg("split_squares") = s.split_squares,
+                  py::arg("warp_failure") = s.warp_failure, py::arg("boundary_faces") = s.boundary_faces,
+                  py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
+                  py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
+}
+
+py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,
+                        bool warp) {
+  TetMeshOptions options;
+  options.max_size = max_size;
+  options.generic_grid = generic_grid;
+  options.warp = warp;
+  if (!size_field.is_none()) options.size_field = size_field3(size_field);
+  TetMeshResult result;
+  AlphaResult alpha;
+  QualityReport quality;
+  double seconds = 0;
+  {
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    result = tet_mesh(*domain, options);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    alpha = compute_alpha(domain->plc);
+    quality = quality_report(result.mesh);
+  }
+  const TetMeshStats& s = result.stats;
+  py::object mesh = py::cast(std::make_shared<TetMesh3>(std::move(result.mesh)));
+  mesh.attr("domain") = domain;
+  mesh.attr("alpha") = alpha.degrees();
+  mesh.attr("max_aspect_ratio") = quality.aspect_ratio.max;
+  mesh.attr("aspect_bound") = kMeasuredAspectAlphaC / alpha.radians;
+  mesh.attr("min_dihedral") = quality.min_angle.min;
+  mesh.attr("max_dihedral") = quality.max_angle.max;
+  mesh.attr("stats") = stats_dict(s);
+  mesh.attr("seconds") = py::dict(py::arg("octree") = s.seconds_octree, py::arg("classify") = s.seconds_classify,
+                                  py::arg("tetrahedra") = s.seconds_tetrahedra, py::arg("boundary") = s.seconds_boundary,
+                                  py::arg("mesh") = seconds);
+  return mesh;
+}
+
+}  // namespace
+
+void bind_mesh3d(py::module_& m) {
+  m.def("tet_mesh", &run_tet_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
+        py::arg("generic_grid"), py::arg("warp"), "tet_mesh(domain, options); see pqmesh.tetrahedralize.");
+}
+
+}  // namespace pqmesh::python
