@@ -60,3 +60,11 @@ def test_quality_2d():
     assert quality.aspect_ratio.min >= 2 - 1e-12
     assert sum(quality.min_angle_hist.counts) == quality.elements
     assert "aspect" in quality.text
+
+
+def test_facets_with_holes_round_trip():
+    domain = pqmesh.read_domain(str(DATA / "3d" / "cube_through_hole.poly"))
+    holed = [facet for facet in domain.facets if isinstance(facet[0], list)]
+    assert len(holed) == 2 and all(len(loops) == 2 for loops in holed)  # outer loop and hole
+    again = pqmesh.Domain3(domain.points, domain.facets, domain.facet_markers)
+    assert again.facets == domain.facets and again.volume == pytest.approx(48)
