@@ -90,8 +90,9 @@
 
 namespace pqmesh::tet3d {
 
-// Kinds of box jobs (facet_boxes.hpp). FromFacet: legacy jobs {leaf, facet},
-// an empty box when facet < 0, else a facet box.
+// Kinds of box jobs (facet_boxes.hpp). FromFacet: a job given as {leaf,
+// facet} (plan_boxes on the aligned grid, empty_boxes.hpp), an empty box when
+// facet < 0, else a facet box.
 enum class BoxKind : std::uint8_t { FromFacet, Empty, Facet, Edge, Vertex, TwoFacet };
 const char* to_string(BoxKind kind);
 

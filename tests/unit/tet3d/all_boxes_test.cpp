@@ -583,21 +583,12 @@ void expect_lemma6(const Totals& t) {
 }
 
 // Measured floors with warping on (§4.3 both passes, warp.hpp; they fail
-// unwarped). Lemma 6 asks |xy| >= min(t, h/16) for distinct I-vertices x, y
-// of one tetrahedron; warped, every pair under h/16 is of a form listed in
-// Lemma6Pairs (sharp, or at a box vertex or segment left short), while
-// unwarped, pairs of no listed form come to 0.017-0.047 h on the random
-// tetrahedra, stars and L-prisms (the check below would fail there). Worst
-// aspect ratios warped / unwarped: facet 740 / 3,250 (663 before square
-// centres moved with their corners), vertex 173 / 2,944, two-facet 375 /
-// 3,529. Edge boxes get no aspect floor: an edge E clipping a
-// box within h/8 of a box edge has its two Case B vertices on the prewarped
-// faces, as close as E is to that box edge (Lemma 6 fails there;
-// docs/algorithm/tet3d_warp.md): warped 11,140 (stars). Putting them on the warped squares
-// (warped_crossing.hpp, not yet used by cut_square_edge.cpp) measured 1,636; choosing the
-// apex along E (facet_boxes.hpp, when the midpoint is nearly in the plane of a face triangle)
-// measured 1,520 (stars; worst of the random tetrahedra 384, was 523): the ceiling below is
-// that measurement, rounded up.
+// unwarped): Lemma 6 in the form of expect_lemma6 (every pair of I-vertices
+// under h/16 is of a form listed in Lemma6Pairs), and ceilings on the worst
+// aspect ratio per box kind, each above the largest measured value (facet
+// 740, vertex 173, two-facet 375, edge 1,520 on the stars). Edge boxes get
+// the highest: E clipping a box within h/8 of a box edge puts two Case B
+// vertices close together (docs/algorithm/tet3d_warp.md).
 void expect_warp_floors(const Totals& t) {
   if (!t.warp) return;
   EXPECT_GT(t.warped, 0);
