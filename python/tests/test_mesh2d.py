@@ -105,6 +105,7 @@ def test_no_boundary_steiner_keeps_input_boundary_vertices():
     assert mesh.path in ("full", "q-only", "cdt", "cdt-better")
     # The quadtree mesher, by contrast, adds boundary vertices here.
     quad = pqmesh.triangulate(domain)
+    assert_valid(quad)
     assert not pqmesh.check(quad, domain, no_boundary_steiner=True).valid
 
 
@@ -112,5 +113,6 @@ def test_deterministic():
     domain = pqmesh.read_domain(str(DATA / "2d" / "square_holes.poly"))
     first, second = pqmesh.triangulate(domain), pqmesh.triangulate(domain)
     assert_valid(first)
+    assert_valid(second)
     for name in ("points", "triangles", "edges", "edge_markers"):
         assert np.array_equal(getattr(first, name), getattr(second, name)), name

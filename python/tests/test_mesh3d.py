@@ -34,6 +34,7 @@ def test_numpy_facets_same_mesh_as_lists():
     from_lists = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS)
     from_arrays = pqmesh.tetrahedralize(np.array(CUBE_POINTS, dtype=float), np.array(CUBE_FACETS),
                                         facet_markers=np.array(CUBE_MARKERS))
+    assert_valid(from_lists)
     assert_valid(from_arrays)
     assert np.array_equal(from_lists.points, from_arrays.points)
     assert np.array_equal(from_lists.tetrahedra, from_arrays.tetrahedra)
@@ -73,6 +74,7 @@ def test_domain_keyword_and_file_domain_equal_array_domain():
     from_file = pqmesh.tetrahedralize(domain=domain)
     from_arrays = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS)
     assert_valid(from_file)
+    assert_valid(from_arrays)
     assert np.array_equal(from_file.points, from_arrays.points)
     assert np.array_equal(from_file.tetrahedra, from_arrays.tetrahedra)
     assert np.array_equal(from_file.face_markers, from_arrays.face_markers)
@@ -113,6 +115,7 @@ def test_deterministic():
     for name in ("points", "tetrahedra", "faces", "face_markers"):
         assert np.array_equal(getattr(first, name), getattr(second, name)), name
     assert_valid(first)
+    assert_valid(second)
 
 
 def test_arrays_are_read_only_views():
