@@ -88,13 +88,14 @@ struct TetMeshStats {
   std::int64_t edge_jobs = 0, vertex_jobs = 0, two_facet_jobs = 0;
   std::int64_t facet_inside = 0, facet_on = 0, facet_beyond = 0;  // facet boxes per §4.5.4 case
   std::int64_t warped = 0;                                // vertices moved by warping (§4.3, both passes)
-  // Warp tables rebuilt because a warp inverted a tetrahedron (the rebuild
-  // loop of tet3d, docs/algorithm/tet3d_warp.md); 0 when none inverted.
+  // Warp tables rebuilt because a warp inverted a tetrahedron (the rebuild loop
+  // of tet3d, docs/algorithm/tet3d_warp.md "The rebuild loop"); 0 when none
+  // inverted.
   std::int64_t warp_rebuilds = 0;
   // Rounds of the worst-box freeze kept: after the rebuild loop, a mesh whose
   // worst tetrahedron is flat has the warps of that tetrahedron's box frozen
   // while its worst tetrahedron strictly improves
-  // (docs/algorithm/tet3d_warp.md).
+  // (docs/algorithm/tet3d_warp.md "Freezing the worst box's warps").
   std::int64_t worst_box_rounds = 0;
   // Squares of united vertex boxes triangulated in one piece per plane group
   // (coplanar facets joined by flat edges; docs/algorithm/tet3d_boxes.md "The

@@ -24,16 +24,16 @@
 //     may be infinitesimally thin, e.g. P touching C from outside along a
 //     facet lying on a plane of C; it is reported like any other.
 //
-// Method (documented in cube_components.cpp): sheets (components of ∂P ∩ C)
-// by union-find of facet triangles whose pieces in C share a vertex or a side
-// (a triangle meets the convex C_e in a convex, hence connected, piece);
-// regions of ∂C ∩ P joined to the sheets by walking axis-parallel lines on
-// ∂C (the 12 cube edges and probe lines through every point where a triangle
-// side crosses a cube face); internal floaters joined by the tether of
-// §4.1.6 (a ray in +x from the shell's largest vertex). Fast path: when the facets meeting C form one cone whose apex meets C (they
-// share a vertex v lying in C; or they are the two facets of the one P edge
-// meeting C; or there is one facet and no edge), P ∩ C is connected
-// (cube_components.cpp, single_cone).
+// Method (documented in cube_components.cpp): sheets (components of ∂P ∩ C) by
+// union-find of facet triangles whose pieces in C share a vertex or a side (a
+// triangle meets the convex C_e in a convex, hence connected, piece); regions
+// of ∂C ∩ P joined to the sheets by walking axis-parallel lines on ∂C (the 12
+// cube edges and probe lines through every point where a triangle side crosses
+// a cube face); internal floaters joined by the tether of §4.1.6 (a ray in +x
+// from the shell's largest vertex). Fast path: when the facets meeting C form
+// one cone whose apex meets C (they share a vertex v lying in C; or they are
+// the two facets of the one P edge meeting C; or there is one facet and no
+// edge), P ∩ C is connected (cube_components.cpp, single_cone).
 #include <span>
 #include <utility>
 #include <vector>

@@ -4,8 +4,8 @@
 // fraction of delta_P(V), the distance from V to the closest face of dP not
 // containing V. The thesis's smallest spirals shrink geometrically and, with
 // strong interference on both sides of a corner, meet below the resolution of
-// doubles (docs/algorithm/nosteiner2d.md "Known limits"); the floor keeps every spoke end (and hence Q and R)
-// representable.
+// doubles (docs/algorithm/nosteiner2d.md "Known limits"); the floor keeps every
+// spoke end (and hence Q and R) representable.
 #include "pqmesh/nosteiner.hpp"
 
 namespace pqmesh::detail {

@@ -1,8 +1,8 @@
 #pragma once
 // orient3d(a, b, c, d) for one fixed triangle a, b, c and many points d (the
 // points the 3D mesher settles onto a slanted facet plane,
-// docs/algorithm/predicates.md and docs/algorithm/mesh3d.md), with an exact stage cheaper than
-// orient3d's own.
+// docs/algorithm/predicates.md and docs/algorithm/mesh3d.md), with an exact
+// stage cheaper than orient3d's own.
 //
 // det(b - a, c - a, d - a) = N . d - K with N = (b - a) x (c - a) =
 // b x c + c x a + a x b and K = a . (b x c) = det(a, b, c), exactly (the

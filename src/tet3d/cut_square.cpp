@@ -102,8 +102,9 @@ CutCase triangulate_cut_square(const FaceSquare& s, const CornerSet& corners, co
   // segments start at the centre where it is (warped with its corners,
   // warp.hpp, which keeps its side of F): from the prewarped centre the
   // projections left the bent face and the chord's line slanted past an
-  // edge-box apex (docs/algorithm/tet3d_warp.md, bounded seed 76). A
-  // construction only: which points are projected was decided above.
+  // edge-box apex (docs/algorithm/tet3d_warp.md "Chord projections from the
+  // warped centre", bounded seed 76). A construction only: which points are
+  // projected was decided above.
   const Warp* cw = warps != nullptr ? warps->find(centre) : nullptr;
   const Vec3 from = cw != nullptr ? cw->at : C;
   auto projection = [&](const PiPoint& p) {

@@ -293,7 +293,7 @@ EdgeCutCase triangulate_edge_square(const FaceSquare& s, const CornerSet& corner
       axis_ref(p, s.v) = bracket(s.v);
       if (!within_ulp_of_segment(p, ea, eb)) throw InternalError(where + ": edge crossing not within an ulp of the edge");
       // After the first warping pass, E crosses the tilted square
-      // (docs/algorithm/tet3d_warp.md).
+      // (docs/algorithm/tet3d_warp.md "The Case B vertex on the warped square").
       if (const auto w = warped_square_crossing(ea, eb, s, tree, warps)) return *w;
       return p;
     });

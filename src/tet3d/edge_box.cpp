@@ -51,13 +51,13 @@ void BoxAssembler::edge_box(std::int32_t leaf, int edge) {
   for (const Tri& t : tris) cone(leaf, t, v);
 }
 
-// An edge box whose apex v on E sees every face triangle, but some of its
-// cones are flat (worst tet_shape `single` above kFlatCone): the best of
-// two constructions of ours (docs/algorithm/tet3d_warp.md), taken only if its
-// worst tet_shape is strictly better than `single`, the two-point
-// construction on ties. Both make only tetrahedra that are positive by
-// exact orient3d, so the rebuild loop never reacts to them; floats only
-// choose between valid constructions.
+// An edge box whose apex v on E sees every face triangle, but some of its cones
+// are flat (worst tet_shape `single` above kFlatCone): the best of two
+// constructions of ours (docs/algorithm/tet3d_warp.md "Flat cones from two
+// points", "Facet fans in flat edge boxes"), taken only if its worst tet_shape
+// is strictly better than `single`, the two-point construction on ties. Both
+// make only tetrahedra that are positive by exact orient3d, so the rebuild loop
+// never reacts to them; floats only choose between valid constructions.
 bool BoxAssembler::flat_edge_box(std::int32_t leaf, int edge, const std::vector<Tri>& tris, int v, double single) {
   const TwoApex two = flat_two_apex(leaf, tris, v);
   const FacetFans fans = facet_fans_ ? best_facet_fans(leaf, edge, tris, v) : FacetFans{};

@@ -164,19 +164,18 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       if (full) candidates.reset();
       release_free_heap();
     }
-    // One decision per shared face (docs/algorithm/tet3d_warp.md): a reported
-    // point keeps only the part of its second pass within the reporting
-    // box's faces, which leaves a face near a P edge unwarped. Its move out of
-    // the reporting box (away from that box's apex) helps that box but bends
-    // the face of the box across, whose own apex may lie near it (every-run
-    // seed 30: 1,833 -> 393; seed 100: 304 -> 675). Both tables give valid
-    // meshes when the trial inverts nothing (exact orient3d); the one with
-    // the better worst tetrahedron (tet_shape, only compared) is kept, the
-    // table without those moves on a tie. Runs without such a move are
-    // unchanged.
-    // The finished trial is dropped before the other table is built (the
-    // candidates and a mesh are a large part of the peak memory); when that
-    // table loses, the final pass below remakes this mesh.
+    // One decision per shared face (docs/algorithm/tet3d_warp.md "One decision
+    // per shared face"): a reported point keeps only the part of its second
+    // pass within the reporting box's faces, which leaves a face near a P edge
+    // unwarped. Its move out of the reporting box (away from that box's apex)
+    // helps that box but bends the face of the box across, whose own apex may
+    // lie near it (every-run seed 30: 1,833 -> 393; seed 100: 304 -> 675). Both
+    // tables give valid meshes when the trial inverts nothing (exact orient3d);
+    // the one with the better worst tetrahedron (tet_shape, only compared) is
+    // kept, the table without those moves on a tie. Runs without such a move
+    // are unchanged. The finished trial is dropped before the other table is
+    // built (the candidates and a mesh are a large part of the peak memory);
+    // when that table loses, the final pass below remakes this mesh.
     bool wider_won = false;
     if (done && warps.out_of_face_left > 0) {
       const double worst_before = done->worst_shape();
@@ -272,23 +271,24 @@ bool job_touches(const BoxMesh& m, std::int32_t job, const std::unordered_set<Gr
 }  // namespace
 
 // Two-cone-point edge boxes (BoxAssembler::two_apex_box,
-// docs/algorithm/tet3d_warp.md) keep an edge box valid where the single apex on
-// E inverts, so the rebuild loop does not freeze the warp that caused it; but
-// the warp left in place can make another box worse than the frozen run does
-// (suite seeds 5, 27). So the run without them is made first. Only if the box
-// of that run's worst tetrahedron has a point that the rebuild loop held back
-// (frozen or kept within its box faces) and that is a vertex of a box which had
-// a valid two-point construction in some trial (otherwise a held point of a
-// two-point box did not make the worst box, and the second run costs a whole
-// run for nothing: bounded seed 58 took 2.7x cpu), the run with them is made
-// too, and kept only when its worst tetrahedron (tet_shape, only compared; both
-// meshes are valid by exact orient3d) is strictly better. Otherwise the first
-// run is remade (not kept meanwhile: a mesh is about half the peak memory).
-// Every other run does no extra work and keeps its bytes; no run gets a worse
-// worst tetrahedron. When the worst-box freeze kept a round, the box asked
-// about is the one that was worst before it, so the freeze never adds a run
-// (flat seed 70: the freeze's new worst box holds such a point, and asking
-// about it took the box stage from 14 s to 63 s for a two-point run that lost).
+// docs/algorithm/tet3d_warp.md "Two cone points") keep an edge box valid where
+// the single apex on E inverts, so the rebuild loop does not freeze the warp
+// that caused it; but the warp left in place can make another box worse than
+// the frozen run does (suite seeds 5, 27). So the run without them is made
+// first. Only if the box of that run's worst tetrahedron has a point that the
+// rebuild loop held back (frozen or kept within its box faces) and that is a
+// vertex of a box which had a valid two-point construction in some trial
+// (otherwise a held point of a two-point box did not make the worst box, and
+// the second run costs a whole run for nothing: bounded seed 58 took 2.7x cpu),
+// the run with them is made too, and kept only when its worst tetrahedron
+// (tet_shape, only compared; both meshes are valid by exact orient3d) is
+// strictly better. Otherwise the first run is remade (not kept meanwhile: a
+// mesh is about half the peak memory). Every other run does no extra work and
+// keeps its bytes; no run gets a worse worst tetrahedron. When the worst-box
+// freeze kept a round, the box asked about is the one that was worst before it,
+// so the freeze never adds a run (flat seed 70: the freeze's new worst box
+// holds such a point, and asking about it took the box stage from 14 s to 63 s
+// for a two-point run that lost).
 BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
                    const BoxMeshOptions& options, const detail::BoxMeshTestHooks& hooks) {
   PassNotes notes;

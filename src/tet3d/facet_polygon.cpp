@@ -86,17 +86,17 @@ double BoxAssembler::worst_fan(const Chords& chord, Vec3 g, Vec3 apex, bool exac
   return w;
 }
 
-// §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean
-// is pulled towards the side with more vertices: on a long thin polygon
-// (F clipping a box edge, one face beside it split into small squares:
-// bounded random seed 58, docs/algorithm/tet3d_warp.md) it lies almost on the
-// line of a chord and that fan tetrahedron is flat (aspect 16,433). So when
-// the worst fan tetrahedron from the mean is worse (tet_shape, compared
-// only) than `bar` (the worst cone of the box: only then is the fan the
-// box's weakest part), the polygon's area centroid and its boundary's
+// §4.5.4 asks for "a centrally located point" of F ∩ I(b). The vertex mean is
+// pulled towards the side with more vertices: on a long thin polygon (F
+// clipping a box edge, one face beside it split into small squares: bounded
+// random seed 58, docs/algorithm/tet3d_warp.md "The facet box's fan point") it
+// lies almost on the line of a chord and that fan tetrahedron is flat (aspect
+// 16,433). So when the worst fan tetrahedron from the mean is worse (tet_shape,
+// compared only) than `bar` (the worst cone of the box: only then is the fan
+// the box's weakest part), the polygon's area centroid and its boundary's
 // length-weighted centroid are tried, each rounded onto F and taken only if
-// every one of its fan tetrahedra is positive by exact orient3d and its
-// worst is better. Returns the point (rounded onto F).
+// every one of its fan tetrahedra is positive by exact orient3d and its worst
+// is better. Returns the point (rounded onto F).
 Vec3 BoxAssembler::fan_centre(const Chords& chord, const FacetPlane& plane, int v, double bar) const {
   const Vec3 apex = book_.point(v);
   auto worst = [&](Vec3 g, bool exact) { return worst_fan(chord, g, apex, exact); };

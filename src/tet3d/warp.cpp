@@ -116,16 +116,19 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
   };
   const auto& pv = domain.plc.vertices;
   // Face translations (beyond the thesis; bounded random seed 33,
-  // docs/algorithm/tet3d_warp.md). §4.3's first pass moves a box edge l close to a P edge E by h/8
-  // along d (orthogonal to both, away from E) and bends the two box faces through l. When E clips
-  // the column along l of its edge box B (E ∩ B a few thousandths of h long), the apex on E ∩ I(B)
-  // then lies beyond the prewarped plane of the faces' unmoved parts and its cones onto them invert
-  // (the rebuild loop would freeze l: apex 0.002 h from both faces). Here each of those two faces
-  // of B is translated instead, by the component of the move along its outward normal n (only when
-  // positive: B grows): l gets exactly the move (h/8) d, every face of B stays planar (a face
-  // translated along its normal; the four faces beside it only stretch in their own planes), and
-  // the apex sees them all. h: the smallest box using a point of l (§4.3). The moves go through the
-  // same side and crossing rules and the same fallbacks as every first-pass move.
+  // docs/algorithm/tet3d_warp.md "Face translations"). §4.3's first pass moves
+  // a box edge l close to a P edge E by h/8 along d (orthogonal to both, away
+  // from E) and bends the two box faces through l. When E clips the column
+  // along l of its edge box B (E ∩ B a few thousandths of h long), the apex on
+  // E ∩ I(B) then lies beyond the prewarped plane of the faces' unmoved parts
+  // and its cones onto them invert (the rebuild loop would freeze l: apex 0.002
+  // h from both faces). Here each of those two faces of B is translated
+  // instead, by the component of the move along its outward normal n (only when
+  // positive: B grows): l gets exactly the move (h/8) d, every face of B stays
+  // planar (a face translated along its normal; the four faces beside it only
+  // stretch in their own planes), and the apex sees them all. h: the smallest
+  // box using a point of l (§4.3). The moves go through the same side and
+  // crossing rules and the same fallbacks as every first-pass move.
   struct FaceShift {
     int n = 0;                      // face normal axis
     std::int64_t at = 0;            // the face's grid coordinate along n
@@ -204,15 +207,15 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
       }
     }
   // Adaptive length (beyond the thesis; suite seeds 135 and 67,
-  // docs/algorithm/tet3d_warp.md). When E runs nearly in the translated face G
-  // and crosses its plane inside B (seed 135: 2.1°), the face moves away
-  // from E below that crossing but towards E's line beyond it: the full
-  // translation (h/8) c n would carry ring segments of G across E's line,
-  // those moves would be refused point by point, G would bend past the apex
-  // on E, and the rebuild loop would freeze the box back to the cube. §4.3 moves points away from what they are
-  // near, never onto it, so G takes the largest 2^-k (k = 0..4) of its
-  // translation under which every ring point v of it keeps, with h' the
-  // smallest box using v:
+  // docs/algorithm/tet3d_warp.md "Face translations"). When E runs nearly in
+  // the translated face G and crosses its plane inside B (seed 135: 2.1°), the
+  // face moves away from E below that crossing but towards E's line beyond it:
+  // the full translation (h/8) c n would carry ring segments of G across E's
+  // line, those moves would be refused point by point, G would bend past the
+  // apex on E, and the rebuild loop would freeze the box back to the cube. §4.3
+  // moves points away from what they are near, never onto it, so G takes the
+  // largest 2^-k (k = 0..4) of its translation under which every ring point v
+  // of it keeps, with h' the smallest box using v:
   //   * its exact side of every facet of the boxes using v (orient3d, the
   //     side rule of `accept`);
   //   * for every ring segment [v, w] crossed by F or G of a P edge between
@@ -331,13 +334,13 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     for (const int e : shifted_edges)
       for (int axis = 0; axis < 3; ++axis) seen.push_back({axis, e});
     // Whole box edges first (§4.3 looks at box edges), then ring segments
-    // (pieces of box edges, or edges of smaller neighbouring squares): a
-    // ring point far from E on a box edge that passes near E moves with
-    // that edge's other points (same direction; the same length when they
-    // share h), so the edge stays straight (beyond the thesis: moving only
-    // the pieces near E bends the box edge, the apex's cones onto the far
-    // squares invert and the rebuild loop freezes the whole edge: bounded
-    // random seed 122, docs/algorithm/tet3d_warp.md).
+    // (pieces of box edges, or edges of smaller neighbouring squares): a ring
+    // point far from E on a box edge that passes near E moves with that edge's
+    // other points (same direction; the same length when they share h), so the
+    // edge stays straight (beyond the thesis: moving only the pieces near E
+    // bends the box edge, the apex's cones onto the far squares invert and the
+    // rebuild loop freezes the whole edge: bounded random seed 122,
+    // docs/algorithm/tet3d_warp.md "The first pass on whole box edges").
     std::vector<std::pair<GridPoint, GridPoint>> segments;
     segments.reserve(c.box_edges.size() + c.neighbours.size());
     for (const BoxEdgeSpan& be : c.box_edges) segments.push_back(be.ends(c.p));
@@ -487,16 +490,16 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
     // rebuild loop in facet_boxes.cpp): the first-pass and face moves, which
     // bend a box face past a cone apex near it (an apex on a P edge running
     // nearly in that face), are dropped; the second pass alone from the
-    // prewarped point is kept without its components along the axes on
-    // which the point lies on a face of the inverted tetrahedron's box
-    // (`axes`, bit a for axis a), so that box's faces stay in their planes
-    // and its cones keep their heights, while the point still moves off its
-    // close facet within them (for a one-facet move, each component kept is
-    // the full move's, so the distance to the facet's plane does not drop;
-    // the side rules decide as for every move). Frozen with the face, such
-    // a point would span a Case C1 triangle 0.02 h wide on a face 0.004 h
-    // below an edge-box apex (every-run seed 30, docs/algorithm/tet3d_warp.md).
-    // A point with a second pass only is treated alike (freezing it whole would
+    // prewarped point is kept without its components along the axes on which
+    // the point lies on a face of the inverted tetrahedron's box (`axes`, bit a
+    // for axis a), so that box's faces stay in their planes and its cones keep
+    // their heights, while the point still moves off its close facet within
+    // them (for a one-facet move, each component kept is the full move's, so
+    // the distance to the facet's plane does not drop; the side rules decide as
+    // for every move). Frozen with the face, such a point would span a Case C1
+    // triangle 0.02 h wide on a face 0.004 h below an edge-box apex (every-run
+    // seed 30, docs/algorithm/tet3d_warp.md "Apexes close to a box face"). A
+    // point with a second pass only is treated alike (freezing it whole would
     // leave it where it is, which on harsh seed 17 is a grid point 1e-5 h from
     // F under a two-facet apex). A point with nothing left of its move, or
     // whose move a rule refuses, is left in place (frozen); reported again, it

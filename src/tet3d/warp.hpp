@@ -1,13 +1,13 @@
 #pragma once
 // Thesis §4.3, both warping passes, for the box vertices of every box kind
 // (empty, facet, edge, vertex, two-facet), as one table: grid point -> moved
-// coordinates, computed before any box is meshed
-// (docs/algorithm/tet3d_warp.md). h of a vertex: the smallest box containing it
+// coordinates, computed before any box is meshed (docs/algorithm/tet3d_warp.md
+// "The two passes"). h of a vertex: the smallest box containing it
 // (CornerSet::finest_level, or the deepest job box whose faces use it,
 // WarpCandidate::level). Distances and directions are constructions
-// (floating-point thresholds, as in 2D, docs/algorithm/quad2d.md "Mesh
-// vertices and warping": either outcome is valid, only quality
-// moves); every decision that shapes the mesh stays exact.
+// (floating-point thresholds, as in 2D, docs/algorithm/quad2d.md "Mesh vertices
+// and warping": either outcome is valid, only quality moves); every decision
+// that shapes the mesh stays exact.
 //
 // First pass: a ring segment [v, w] (a piece of a box edge: our box edges are
 // chains of split points) closer than h/8 to a P edge E between two facets of

@@ -4,14 +4,15 @@
 // along those rings, the deepest level of those boxes and the whole box edges
 // through it; then every square centre with its square's four corners.
 //
-// Layout: one flat list, not one object with three heap vectors per point
-// (the candidates are a large part of the peak memory). Points, levels and
-// three compressed rows (facets, neighbours as candidate ids, box edges) in
-// arrays indexed by candidate id. Every row lists its entries without
-// repeats in the order of their first use (the warp's sums depend on that
-// order). While building, neighbours and box edges sit in fixed inline rows (RowBuilder; a point is used ~18 times on plate_holes,
-// so a per-use log would be large), facets in a per-use log (most jobs have
-// none) grouped by a stable counting sort.
+// Layout: one flat list, not one object with three heap vectors per point (the
+// candidates are a large part of the peak memory). Points, levels and three
+// compressed rows (facets, neighbours as candidate ids, box edges) in arrays
+// indexed by candidate id. Every row lists its entries without repeats in the
+// order of their first use (the warp's sums depend on that order). While
+// building, neighbours and box edges sit in fixed inline rows (RowBuilder; a
+// point is used ~18 times on plate_holes, so a per-use log would be large),
+// facets in a per-use log (most jobs have none) grouped by a stable counting
+// sort.
 //
 // Order: candidate ids are first uses, ring points in job order (squares in
 // job_squares order, ring order within a square), then square centres in
@@ -109,7 +110,7 @@ struct WarpCandidate {
   std::int32_t level = -1;
   // The whole box edges through p of the boxes using it (§4.3's first pass
   // looks at box edges, not at the pieces between ring points:
-  // docs/algorithm/tet3d_warp.md).
+  // docs/algorithm/tet3d_warp.md "The first pass on whole box edges").
   std::span<const BoxEdgeSpan> box_edges;
 };
 

@@ -305,7 +305,8 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
   };
   // Whether box vertex v ended nearer than h(v)/16 to the plane of the facet
   // that crossing x lies on: the second pass's clearance was refused or
-  // shortened there (warp.hpp acceptance rules; docs/algorithm/tet3d_warp.md).
+  // shortened there (warp.hpp acceptance rules; docs/algorithm/tet3d_warp.md
+  // "Side rules").
   auto short_of_its_facet = [&](int x, int v) {
     const VertexKey& kx = m.keys[static_cast<std::size_t>(x)];
     const VertexKey& kv = m.keys[static_cast<std::size_t>(v)];
@@ -393,7 +394,7 @@ void measure_kinds(const BoxMesh& m, const std::vector<BoxJob>& jobs, const OctT
         // The sharp wedges this box holds: its edge (edge and two-facet
         // boxes), or every edge at its P vertex (vertex boxes; the thesis
         // states t for protected edge boxes only,
-        // docs/algorithm/tet3d_warp.md).
+        // docs/algorithm/tet3d_warp.md "Lemma 6").
         double sharpest = INFINITY;
         const auto try_wedge = [&](int edge) {
           const EdgeCone ec(d, edge);
@@ -667,10 +668,10 @@ TEST_P(AllBoxes, SeparatedOctreeTetrahedron) {
   expect_warp_floors(t);
 }
 
-// Lemma 6 on the corpus (docs/algorithm/tet3d_warp.md): tet_mesh's octree
-// (separating splits, generic grid), warped; prints the pairs under h/16
-// (Lemma6Pairs). A measurement, run by hand:
-// test_tet3d --gtest_also_run_disabled_tests --gtest_filter='*CorpusLemma6*'
+// Lemma 6 on the corpus (docs/algorithm/tet3d_warp.md "Lemma 6"): tet_mesh's
+// octree (separating splits, generic grid), warped; prints the pairs under h/16
+// (Lemma6Pairs). A measurement, run by hand: test_tet3d
+// --gtest_also_run_disabled_tests --gtest_filter='*CorpusLemma6*'
 TEST(AllBoxesProbe, DISABLED_CorpusLemma6) {
   for (const char* model : {"cube.poly", "l_block.poly", "star_vertex.poly", "wedge_5deg.poly", "schoenhardt.poly",
                             "tuning_fork.poly", "heat_sink.poly", "plate_holes.poly", "prongs_slot.poly", "fins.poly"}) {

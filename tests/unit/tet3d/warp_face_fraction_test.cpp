@@ -1,10 +1,10 @@
 // The length of a face translation (warp.cpp, "Adaptive length";
-// docs/algorithm/tet3d_warp.md, the case of suite random seed 135): the face of
-// an edge box B translated away from B's P edge E takes the largest 2^-k
-// (k = 0..4) of (h/8) c n under which its ring points keep every exact side
-// decision of §4.3's acceptance rule. Here E runs at a small angle to the
-// face and crosses its plane inside B, so beyond that crossing E lies
-// outside the face and the full translation would carry a ring segment of
+// docs/algorithm/tet3d_warp.md "Face translations", the case of suite random
+// seed 135): the face of an edge box B translated away from B's P edge E takes
+// the largest 2^-k (k = 0..4) of (h/8) c n under which its ring points keep
+// every exact side decision of §4.3's acceptance rule. Here E runs at a small
+// angle to the face and crosses its plane inside B, so beyond that crossing E
+// lies outside the face and the full translation would carry a ring segment of
 // the face across E's line. The expected fraction is derived by hand below.
 #include <gtest/gtest.h>
 
