@@ -24,7 +24,7 @@ const std::vector<Command>& commands() {
        "usage: pqmesh mesh INPUT -o OUTPUT [--max-size S] [--size-field FILE] [--refine-angle DEG]\n"
        "                   [--protect-edges] [--aligned-grid] [--no-boundary-steiner [--pipeline] [--thesis-fans] "
        "[--no-quality-pass]]\n"
-       "                   [--format F] [--quiet]\n"
+       "                   [--format F] [--compress] [--quiet]\n"
        "\n"
        "2D: meshes a polygon with holes (Triangle .poly) with the quadtree mesher, the 2D analog of\n"
        "thesis ch. 4 (docs/algorithm/quad2d.md): every angle is at least min(C * alpha, THETA0),\n"
@@ -52,7 +52,10 @@ const std::vector<Command>& commands() {
        "tetrahedra, elapsed) on stderr when it is a terminal.\n"
        "  -o, --output OUTPUT  the mesh file; its extension gives the format as for 'pqmesh convert'\n"
        "                       (.vtu, .msh, .mesh, .node writes .node/.ele/.poly, .svg (2D only))\n"
-       "  --format F           vtu, msh, msh22, mesh, node or svg (2D), whatever OUTPUT's extension\n"
+       "  --format F           vtu, msh (Gmsh 4.1 ASCII), msh41b (Gmsh 4.1 binary), msh22, mesh, node\n"
+       "                       or svg (2D), whatever OUTPUT's extension\n"
+       "  --compress           .vtu: zlib-compressed appended arrays (vtkZLibDataCompressor; smaller,\n"
+       "                       slower to write); the default is uncompressed raw appended data\n"
        "  --max-size S         no tree box side longer than S (S > 0)\n"
        "  --size-field FILE    desired sizes at points, one 'x y size' (2D) or 'x y z size' (3D) per\n"
        "                       line ('#' comments); the size asked for at x is the min over the\n"
@@ -140,14 +143,17 @@ const std::vector<Command>& commands() {
        "  --svg FILE    write the histogram of the angle measure as an SVG bar chart\n",
        run_quality},
       {"convert", "convert a mesh between formats",
-       "usage: pqmesh convert IN OUT [--dim 2|3] [--msh22] [--ascii]\n"
+       "usage: pqmesh convert IN OUT [--dim 2|3] [--msh22] [--format F] [--ascii] [--compress]\n"
        "\n"
        "Reads a mesh and writes it in the format given by OUT's extension: .vtu (VTK XML, cell data\n"
        "'marker' and quality), .msh (Gmsh 4.1; --msh22 for 2.2), .mesh (Medit), .node (writes\n"
        ".node/.ele/.face in 3D, .node/.ele/.poly in 2D), .svg (2D picture coloured by min angle).\n"
        "  --dim 2|3   force the mesh dimension (default: 3 if IN has tetrahedra, else 2)\n"
        "  --msh22     write Gmsh 2.2 instead of 4.1\n"
-       "  --ascii     text instead of binary where the format has both (.vtu)\n",
+       "  --format F  vtu, msh, msh41b (Gmsh 4.1 binary), msh22, mesh, node or svg, whatever OUT's\n"
+       "              extension\n"
+       "  --ascii     text instead of binary where the format has both (.vtu)\n"
+       "  --compress  .vtu: zlib-compressed appended arrays (vtkZLibDataCompressor)\n",
        run_convert},
   };
   return list;
