@@ -50,7 +50,7 @@ py::array checked(py::handle obj, const std::string& name, const char* kinds, in
 
 int to_int(std::int64_t v, const std::string& name, std::int64_t row) {
   if (v < INT_MIN || v > INT_MAX)
-    fail(ErrorCode::IndexOutOfRange, name + " row " + std::to_string(row) + " holds " + std::to_string(v) +
+    fail(ErrorCode::IndexOutOfRange, name + " entry " + std::to_string(row) + " holds " + std::to_string(v) +
                                          ", outside the 32-bit range", {row});
   return static_cast<int>(v);
 }

@@ -126,3 +126,17 @@ def test_arrays_are_read_only_views():
     points = mesh.points
     del mesh
     assert points.shape[1] == 3 and np.isfinite(points).all()  # the view keeps the mesh alive
+
+
+def test_size_field_refines_near_its_point():
+    def near_and_far(mesh):
+        distance = np.linalg.norm(mesh.points[mesh.tetrahedra].mean(axis=1), axis=1)
+        return (distance < 0.25).sum(), (distance > 1.5).sum()
+
+    plain = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True)
+    graded = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, size_field=([(0, 0, 0)], [0.05]))
+    assert_valid(plain)
+    assert_valid(graded)
+    (plain_near, plain_far), (graded_near, graded_far) = near_and_far(plain), near_and_far(graded)
+    assert graded_near > 10 * plain_near  # fine next to the point
+    assert graded_far == plain_far  # the field asks for nothing finer far from it
