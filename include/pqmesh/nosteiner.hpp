@@ -290,8 +290,8 @@ RMesh mesh_r(const PolygonR& r, const QuadMeshOptions& options = {});
 //
 // Fallbacks (never silent; NoSteinerStats::path and fallback_reason say which
 // and why). Where a stage cannot be built in doubles (the spiral-depth limit
-// and R below resolution: docs/algorithm/nosteiner2d.md "Known limits", "Delta and the
-// shrink to R") or a built stage fails the final check:
+// and R below resolution: docs/algorithm/nosteiner2d.md "Known limits", "Delta
+// and the shrink to R") or a built stage fails the final check:
 //   QOnly: Q^c + the constrained Delaunay triangulation of Q (no point added
 //          inside Q); used when R cannot be built or the full mesh fails.
 //   Cdt:   the constrained Delaunay triangulation of P (steiner_free_cdt); used
@@ -310,8 +310,8 @@ inline constexpr int kRegionPCdt = 5;     // Cdt fallback: the CDT of P
 
 struct NoSteinerOptions {
   // The mesher for R (§5.3). Default: refinement towards 20 degrees
-  // (docs/algorithm/nosteiner2d.md "Meshing R": both settings have the properties of
-  // §5.5.1; refined angles are better).
+  // (docs/algorithm/nosteiner2d.md "Meshing R": both settings have the
+  // properties of §5.5.1; refined angles are better).
   QuadMeshOptions r_mesh;
   // Run check_mesh (no_boundary_steiner) on the assembled mesh and fall back
   // (QOnly, then Cdt) when it fails. Off only for timing the stages alone.
