@@ -106,10 +106,11 @@ void write_mesh(const TriMesh2& mesh, const std::string& path, const WriteOption
 void write_mesh(const TetMesh3& mesh, const std::string& path, const WriteOptions& options = {});
 
 // Read a mesh; the format comes from the extension (.msh: the version is read
-// from the file). Vtu: ASCII, inline base64 and appended raw/base64 data
-// without compression. Msh: 4.1 and 2.2 ASCII. Medit: ASCII. TetGen/Triangle:
-// 0- or 1-based numbering. A 2D mesh must lie in the plane z = 0 where the
-// format stores z (Vtu, Msh).
+// from the file). Vtu: ASCII, inline base64 and appended raw/base64 data,
+// uncompressed or compressed with zlib, LZ4 or LZMA, UInt32 or UInt64
+// headers. Msh: 4.1 and 2.2 ASCII (binary .msh is written, not read).
+// Medit: ASCII. TetGen/Triangle: 0- or 1-based numbering. A 2D mesh must lie
+// in the plane z = 0 where the format stores z (Vtu, Msh).
 TriMesh2 read_trimesh(const std::string& path);
 TetMesh3 read_tetmesh(const std::string& path);
 
