@@ -196,7 +196,7 @@ run_pqmesh() {
   # Size against the lower-bound estimate I = integral of 1/lfs^2 (untimed
   # second run with the summary; only meaningful without a size cap).
   if [[ -z $max_size ]]; then
-    local ratio; ratio=$("$pqmesh" mesh "$poly" -o "$dir/summary.vtu" 2>/dev/null | sed -n 's/.*triangles \/ I = \([0-9.e+-]*\).*/\1/p')
+    local ratio; ratio=$("$pqmesh" mesh "$poly" -o "$dir/summary.vtu" --lfs-integral 2>/dev/null | sed -n 's/.*triangles \/ I = \([0-9.e+-]*\).*/\1/p')
     note="triangles/I ${ratio:-n/a}"; rm -f "$dir/summary.vtu"
   fi
   grep -q INVALID "$dir/quality.txt" && note="$note topology INVALID"

@@ -19,7 +19,7 @@ int run_convert(const std::vector<std::string>& argv) {
   options.format = forced ? *forced : mesh_format_from_path(out, args.flag("--msh22"));
   options.binary = !args.flag("--ascii");
   options.compress = compress_option(args, *options.format, options.binary);
-  if (*options.format == MeshFormat::Vtu) options.cell_fields = std::visit([](const auto& m) { return quality_fields(m); }, mesh);
+  if (*options.format == MeshFormat::Vtu) options.cell_fields = std::visit([](const auto& m) { return quality_cell_fields(m); }, mesh);
   std::visit([&](const auto& m) { write_mesh(m, out, options); }, mesh);
   std::cout << "wrote " << out << " (" << to_string(*options.format) << ")\n";
   return kExitOk;

@@ -26,17 +26,17 @@
 #include "format_option.hpp"
 #include "invalid_mesh.hpp"
 #include "large_page_new.hpp"
-#include "quality/triangle_quality_memo.hpp"
+#include "quality_fields.hpp"
 #include "report_format.hpp"
 
 namespace pqmesh::cli {
 namespace {
 
-// Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`).
+// Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`),
+// computed on request only (--lfs-integral): it costs more than meshing.
 // Twice the library default 1/8: a quarter of the cells for about 1% change
 // (data/2d/comb.poly: I = 1883 with 62171 cells at 1/4, 1892 with 243860 at
-// 1/8, 0.12 s instead of 0.44 s; square.poly: 2.410 against 2.442), so the
-// summary costs about what meshing does.
+// 1/8; square.poly: 2.410 against 2.442).
 constexpr double kLfsRefine = 0.25;
 
 // --max-size S: a positive finite number (0 would mean "no limit" in
@@ -55,6 +55,7 @@ struct MeshRun {
   QuadMeshOptions options;
   QuadMeshResult result;
   CheckReport check;
+  bool lfs_integral = false;  // --lfs-integral: compute and print I
   LfsIntegral lfs;
   double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0;
   // The summary's angle extremes (quality_report's min_angle.min/argmin and
@@ -62,27 +63,9 @@ struct MeshRun {
   Stat min_angle, max_angle;
 };
 
-// quality_fields() (quality_fields.hpp) with the shape memo: the same values
-// bit for bit (triangle_quality_memo.hpp), a fraction of the time on a
-// quadtree mesh, whose triangles are mostly translated copies of a few shapes.
-std::vector<CellField> memo_quality_fields(const TriMesh2& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_angle", {}, true}, {"max_angle", {}, true}};
-  for (auto& f : fields) f.values.reserve(mesh.triangles.size());  // filled in order: no zeroing pass
-  TriangleQualityMemo quality;
-  const auto& v = mesh.vertices;
-  for (const auto& t : mesh.triangles) {
-    const TriQuality q = quality(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
-                                 v[static_cast<std::size_t>(t[2])]);
-    fields[0].values.push_back(q.aspect_ratio);
-    fields[1].values.push_back(q.min_angle_deg);
-    fields[2].values.push_back(q.max_angle_deg);
-  }
-  return fields;
-}
-
 // The angle extremes of quality_report(mesh), taken from the fields of
-// memo_quality_fields instead of a second evaluation of every triangle: the
-// values are the same bits (both use TriangleQualityMemo) and the tie-break is
+// quality_cell_fields instead of a second evaluation of every triangle: the
+// values are the same bits (both go through TriangleQualityMemo) and the tie-break is
 // quality_report's (the first triangle attaining the extreme). Only min/argmin
 // of min_angle and max/argmax of max_angle are set.
 void angle_extremes(const std::vector<CellField>& fields, Stat& min_angle, Stat& max_angle) {
@@ -98,6 +81,20 @@ void angle_extremes(const std::vector<CellField>& fields, Stat& min_angle, Stat&
       max_angle.argmax = static_cast<std::int64_t>(e);
     }
   }
+}
+
+// The "size" line, printed when --lfs-integral asked for I(P), the integral of
+// 1/lfs^2 over P with the Euclidean lfs (pqmesh/lfs.hpp): up to a constant, a
+// lower bound on the triangles of any bounded-angle mesh of P, except across
+// exterior slots, where the Euclidean lfs makes it an overestimate.
+void print_lfs_integral_line(const MeshRun& run) {
+  if (!run.lfs_integral) return;
+  const bool sized = run.options.max_size > 0 || !run.options.size_field.points.empty();
+  const double triangles = static_cast<double>(run.result.mesh.triangles.size());
+  std::cout << "size       I = integral of 1/lfs^2 over P = " << fmt4(run.lfs.value) << " (Euclidean lfs, "
+            << run.lfs.cells << " cells); triangles / I = "
+            << (run.lfs.value > 0 ? fmt4(triangles / run.lfs.value) : "-") << (sized ? " (I ignores the sizing)" : "")
+            << '\n';
 }
 
 // One screen, labels padded to 11 columns as in `pqmesh info`.
@@ -135,14 +132,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
             << fmt4(run.max_angle.max) << " deg (triangle " << run.max_angle.argmax << "); "
             << (run.min_angle.min >= bound - 1e-9 ? "bound holds" : "BELOW THE BOUND") << '\n'
             << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
-  // I(P) with the Euclidean lfs (pqmesh/lfs.hpp): up to a constant, a lower
-  // bound on the triangles of any bounded-angle mesh of P, except across
-  // exterior slots, where the Euclidean lfs makes it an overestimate.
-  std::cout << "size       I = integral of 1/lfs^2 over P = " << fmt4(run.lfs.value) << " (Euclidean lfs, "
-            << run.lfs.cells << " cells); triangles / I = "
-            << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.triangles.size()) / run.lfs.value) : "-")
-            << (run.options.max_size > 0 || !field.points.empty() ? " (I ignores the sizing)" : "") << '\n'
-            << "tree       " << s.leaves << " leaves (" << s.duplicates << " duplicates, " << s.outside_leaves
+  print_lfs_integral_line(run);
+  std::cout << "tree       " << s.leaves << " leaves (" << s.duplicates << " duplicates, " << s.outside_leaves
             << " outside P)\n"
             << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", edge " << s.splits_edge
             << ", balance " << s.splits_balance << ", centering " << s.splits_centering << ", protection "
@@ -159,7 +150,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
             << '\n'
             << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
             << ", triangulate " << fmt_seconds(s.seconds_triangulate) << "; mesh " << fmt_seconds(run.seconds_mesh)
-            << ", check " << fmt_seconds(run.seconds_check) << ", lfs " << fmt_seconds(run.seconds_lfs) << '\n'
+            << ", check " << fmt_seconds(run.seconds_check)
+            << (run.lfs_integral ? ", lfs " + fmt_seconds(run.seconds_lfs) : std::string()) << '\n'
             << "check      valid: " << run.check.elements << " triangles, " << run.check.vertices << " vertices, "
             << run.check.boundary_faces << " boundary edges; area " << fmt(run.check.mesh_volume) << " (domain "
             << fmt(run.check.domain_volume) << ")\n"
@@ -170,7 +162,7 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
                                                  "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
-                                                 "--aligned-grid", "--compress"};
+                                                 "--aligned-grid", "--compress", "--lfs-integral"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
 
@@ -207,7 +199,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   // default: a 1 MiB threshold raised data/3d/plate_holes.poly's peak by about
   // 2 MB.)
   set_large_page_threshold(std::size_t{1} << 20);
-  const Args args(argv, {"--quiet", "--protect-edges", "--compress"},
+  const Args args(argv, {"--quiet", "--protect-edges", "--compress", "--lfs-integral"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   MeshRun run;
@@ -240,7 +232,8 @@ int run_mesh(const std::vector<std::string>& argv) {
   run.seconds_check = seconds_since(start);
   if (!valid_or_reported(run.check, "the mesh of " + run.input)) return kExitInternal;
 
-  if (!quiet) {  // the size estimate is for the summary only
+  run.lfs_integral = args.flag("--lfs-integral") && !quiet;
+  if (run.lfs_integral) {  // the size estimate is for the summary only, on request
     start = Clock::now();
     run.lfs = lfs_integral(domain, kLfsRefine);
     run.seconds_lfs = seconds_since(start);
@@ -250,7 +243,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   write.format = run.format;
   write.compress = compress;
   if (run.format == MeshFormat::Vtu) {
-    write.cell_fields = memo_quality_fields(run.result.mesh);
+    write.cell_fields = quality_cell_fields(run.result.mesh);
     if (!quiet) angle_extremes(write.cell_fields, run.min_angle, run.max_angle);
   } else if (!quiet) {
     const QualityReport q = quality_report(run.result.mesh);

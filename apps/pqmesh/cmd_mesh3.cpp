@@ -22,7 +22,6 @@
 #include "format_option.hpp"
 #include "invalid_mesh.hpp"
 #include "load.hpp"
-#include "mv3d/octree_builder.hpp"
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/lfs3.hpp"
@@ -34,9 +33,6 @@
 
 namespace pqmesh::cli {
 
-// Defined in cmd_octree.cpp (the reader of `pqmesh octree --size-field`).
-mv3d::SizeField3 read_size_field3(const std::string& path);
-
 namespace {
 
 struct Mesh3Run {
@@ -45,6 +41,7 @@ struct Mesh3Run {
   TetMeshOptions options;
   TetMeshResult result;
   CheckReport check;
+  bool lfs_integral = false;  // --lfs-integral: compute and print I3
   LfsIntegral3 lfs;
   double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0, seconds_write = 0;
 };
@@ -89,6 +86,18 @@ SummaryQuality summary_quality(const TetMesh3& mesh, const std::vector<CellField
   return out;
 }
 
+// The "size" line, printed when --lfs-integral asked for I3(P), the integral of
+// 1/lfs^3 over P (pqmesh/lfs3.hpp): up to a constant, a lower bound on the
+// tetrahedra of any bounded-aspect mesh of P (thesis §4.8, Theorem 14).
+void print_lfs_integral_line(const Mesh3Run& run) {
+  if (!run.lfs_integral) return;
+  const bool sized = run.options.max_size > 0 || !run.options.size_field.points.empty();
+  const double tetrahedra = static_cast<double>(run.result.mesh.tetrahedra.size());
+  std::cout << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
+            << " cells); tetrahedra / I3 = " << (run.lfs.value > 0 ? fmt4(tetrahedra / run.lfs.value) : "-")
+            << (sized ? " (I3 ignores the sizing)" : "") << '\n';
+}
+
 void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector<CellField>& fields) {
   const TetMesh3& mesh = run.result.mesh;
   const TetMeshStats& s = run.result.stats;
@@ -113,12 +122,10 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << mesh.faces.size() << " boundary triangles\n"
             << "quality    max aspect ratio " << fmt4(q.max_aspect) << " (tetrahedron " << q.argmax_aspect
             << "; measured bound C / alpha = " << fmt4(kMeasuredAspectAlphaC / alpha.radians) << ", C = "
-            << fmt4(kMeasuredAspectAlphaC) << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max " << fmt4(q.max_dihedral) << " deg\n"
-            << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
-            << " cells); tetrahedra / I3 = "
-            << (run.lfs.value > 0 ? fmt4(static_cast<double>(mesh.tetrahedra.size()) / run.lfs.value) : "-")
-            << (run.options.max_size > 0 || !field.points.empty() ? " (I3 ignores the sizing)" : "") << '\n'
-            << "grid       "
+            << fmt4(kMeasuredAspectAlphaC) << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max "
+            << fmt4(q.max_dihedral) << " deg\n";
+  print_lfs_integral_line(run);
+  std::cout << "grid       "
             << (run.options.generic_grid ? "generic, planes shifted by " +
                                                fmt(Vec3{s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]})
                                          : std::string("aligned"))
@@ -136,8 +143,9 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
                                        : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
             << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)
             << ", tetrahedra " << fmt_seconds(s.seconds_tetrahedra) << ", boundary " << fmt_seconds(s.seconds_boundary)
-            << "; mesh " << fmt_seconds(run.seconds_mesh) << ", check " << fmt_seconds(run.seconds_check) << ", lfs "
-            << fmt_seconds(run.seconds_lfs) << ", write " << fmt_seconds(run.seconds_write) << '\n'
+            << "; mesh " << fmt_seconds(run.seconds_mesh) << ", check " << fmt_seconds(run.seconds_check)
+            << (run.lfs_integral ? ", lfs " + fmt_seconds(run.seconds_lfs) : std::string()) << ", write "
+            << fmt_seconds(run.seconds_write) << '\n'
             << "check      " << run.check.to_text().substr(0, run.check.to_text().find('\n')) << '\n'
             << "output     " << run.output << " (" << to_string(run.format) << ")\n";
 }
@@ -178,8 +186,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   const LoadedDomain loaded = load_domain(run.input, read_options_from(args));
   const Domain3& domain = std::get<Domain3>(loaded.domain);
   if (const auto path = args.option("--size-field")) {
-    const mv3d::SizeField3 f = read_size_field3(*path);
-    run.options.size_field = {f.points, f.sizes, f.lines, f.path};
+    run.options.size_field = read_size_field3(*path);
   }
   if (!quiet && isatty(fileno(stderr))) run.options.progress = show_progress;
 
@@ -191,7 +198,8 @@ int run_mesh3(const std::vector<std::string>& argv) {
   run.check = check_mesh(run.result.mesh, domain);
   run.seconds_check = seconds_since(start);
   if (!valid_or_reported(run.check, "the mesh of " + run.input)) return kExitInternal;
-  if (!quiet) {  // the size estimate is for the summary only
+  run.lfs_integral = args.flag("--lfs-integral") && !quiet;
+  if (run.lfs_integral) {  // the size estimate is for the summary only, on request
     start = Clock::now();
     run.lfs = lfs_integral(domain);
     run.seconds_lfs = seconds_since(start);
@@ -200,7 +208,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   WriteOptions write;
   write.format = run.format;
   write.compress = compress;
-  if (run.format == MeshFormat::Vtu) write.cell_fields = quality_fields(run.result.mesh);
+  if (run.format == MeshFormat::Vtu) write.cell_fields = quality_cell_fields(run.result.mesh);
   write_mesh(run.result.mesh, run.output, write);
   run.seconds_write = seconds_since(start);
   if (!quiet) print_summary(domain, run, write.cell_fields);

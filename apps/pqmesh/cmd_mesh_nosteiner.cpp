@@ -59,7 +59,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   WriteOptions write;
   write.format = format;
   write.compress = compress;
-  if (format == MeshFormat::Vtu) write.cell_fields = quality_fields(result.mesh);
+  if (format == MeshFormat::Vtu) write.cell_fields = quality_cell_fields(result.mesh);
   write_mesh(result.mesh, output, write);
   if (quiet) return kExitOk;
 

@@ -1,8 +1,7 @@
-// pqmesh octree: build the octree of thesis §4.1 (mv3d::OctreeBuilder) for a 3D
+// pqmesh octree: build the octree of thesis §4.1 (pqmesh/octree.hpp) for a 3D
 // domain and write its leaves as VTK hexahedra (.vtu, ASCII) with per-leaf data.
-#include <algorithm>
 #include <chrono>
-#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -11,62 +10,27 @@
 #include <vector>
 
 #include "atomic_file.hpp"
-#include "io/read_text_tokens.hpp"
 #include "commands.hpp"
 #include "load.hpp"
-#include "mv3d/leaf_kind.hpp"
-#include "mv3d/octree_builder.hpp"
 #include "pqmesh/errors.hpp"
+#include "pqmesh/octree.hpp"
 #include "report_format.hpp"
 
 namespace pqmesh::cli {
 namespace {
 
-const char* phase_name(mv3d::OctPhase p) {
-  switch (p) {
-    case mv3d::OctPhase::Root: return "root";
-    case mv3d::OctPhase::Vertex: return "vertex";
-    case mv3d::OctPhase::Centering: return "centering";
-    case mv3d::OctPhase::Edge: return "edge";
-    case mv3d::OctPhase::Facet: return "facet";
-    case mv3d::OctPhase::Balance: return "balance";
-    case mv3d::OctPhase::Size: return "size";
-    case mv3d::OctPhase::EdgeSeparate: return "edge-separate";
-    case mv3d::OctPhase::FacetSeparate: return "facet-separate";
-  }
-  return "?";
-}
-
-// A leaf is a duplicate when another node carries its key (thesis §4.1.1).
-bool is_duplicate(const OctTree& t, std::int32_t n) {
-  const std::int32_t head = t.find(t.key(n));
-  return head != n || t.next_same_key(n) >= 0;
-}
-
 template <class F>
-void int_array(std::ostringstream& s, const char* name, const char* type, const std::vector<std::int32_t>& leaves,
+void int_array(std::ostringstream& s, const char* name, const char* type, const std::vector<OctreeLeaf>& leaves,
                F value) {
   s << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" format=\"ascii\">\n         ";
-  for (const std::int32_t n : leaves) s << ' ' << value(n);
+  for (const OctreeLeaf& leaf : leaves) s << ' ' << value(leaf);
   s << "\n        </DataArray>\n";
 }
 
 // The leaves as an unstructured grid of hexahedra (VTK cell type 12), eight
 // points per leaf (not shared), corners in VTK order: the lower face
-// counter-clockwise seen from below... i.e. (0,0,0) (1,0,0) (1,1,0) (0,1,0), then
-// the upper face in the same order.
-// The kind of every leaf (mv3d/leaf_kind.hpp), indexed by node id.
-std::vector<mv3d::LeafKind> leaf_kinds(const mv3d::OctreeBuilder& b, const std::vector<std::int32_t>& leaves) {
-  const mv3d::LeafClassifier classifier(b.domain());
-  std::vector<mv3d::LeafKind> kinds(static_cast<std::size_t>(b.tree().size()), mv3d::LeafKind::Other);
-  for (const std::int32_t n : leaves)
-    kinds[static_cast<std::size_t>(n)] = classifier.classify(mv3d::leaf_faces(b, n)).kind;
-  return kinds;
-}
-
-std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int32_t>& leaves,
-                       const std::vector<mv3d::LeafKind>& kinds /* by node id */) {
-  const OctTree& t = b.tree();
+// (0,0,0) (1,0,0) (1,1,0) (0,1,0), then the upper face in the same order.
+std::string leaves_vtu(const std::vector<OctreeLeaf>& leaves) {
   std::ostringstream s;
   s.precision(std::numeric_limits<double>::max_digits10);
   s << "<?xml version=\"1.0\"?>\n"
@@ -76,11 +40,10 @@ std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int3
     << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   static const int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (const std::int32_t n : leaves) {
-    const auto box = t.box(n);
+  for (const OctreeLeaf& leaf : leaves) {
     for (const auto& c : kCorner)
-      s << "          " << (c[0] ? box.hi[0] : box.lo[0]) << ' ' << (c[1] ? box.hi[1] : box.lo[1]) << ' '
-        << (c[2] ? box.hi[2] : box.lo[2]) << '\n';
+      s << "          " << (c[0] ? leaf.hi[0] : leaf.lo[0]) << ' ' << (c[1] ? leaf.hi[1] : leaf.lo[1]) << ' '
+        << (c[2] ? leaf.hi[2] : leaf.lo[2]) << '\n';
   }
   s << "        </DataArray>\n      </Points>\n      <Cells>\n"
     << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
@@ -94,57 +57,67 @@ std::string leaves_vtu(const mv3d::OctreeBuilder& b, const std::vector<std::int3
   s << "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n         ";
   for (std::size_t i = 0; i < leaves.size(); ++i) s << " 12";
   s << "\n        </DataArray>\n      </Cells>\n      <CellData>\n";
-  int_array(s, "level", "Int32", leaves, [&](std::int32_t n) { return t.level(n); });
-  int_array(s, "component", "Int32", leaves,
-            [&](std::int32_t n) { return b.data(n).has_component ? t.component(n) : -1; });
-  int_array(s, "duplicate", "UInt8", leaves, [&](std::int32_t n) { return is_duplicate(t, n) ? 1 : 0; });
-  int_array(s, "protected", "UInt8", leaves, [&](std::int32_t n) { return t.is_protected(n) ? 1 : 0; });
-  int_array(s, "phase", "Int32", leaves, [&](std::int32_t n) { return static_cast<int>(b.phase(n)); });
-  int_array(s, "vertex_owner", "Int32", leaves, [&](std::int32_t n) { return b.data(n).vertex_owner; });
-  // Cone kind (LeafKind order) and the step that protected the leaf (its
-  // OctPhase; 0 when unprotected).
-  int_array(s, "cone_kind", "Int32", leaves,
-            [&](std::int32_t n) { return static_cast<int>(kinds[static_cast<std::size_t>(n)]); });
-  int_array(s, "protected_by", "Int32", leaves, [&](std::int32_t n) {
-    return t.is_protected(n) ? static_cast<int>(b.protected_by(n)) : 0;
-  });
+  int_array(s, "level", "Int32", leaves, [](const OctreeLeaf& l) { return l.level; });
+  int_array(s, "component", "Int32", leaves, [](const OctreeLeaf& l) { return l.component; });
+  int_array(s, "duplicate", "UInt8", leaves, [](const OctreeLeaf& l) { return l.duplicate ? 1 : 0; });
+  int_array(s, "protected", "UInt8", leaves, [](const OctreeLeaf& l) { return l.protected_box ? 1 : 0; });
+  int_array(s, "phase", "Int32", leaves, [](const OctreeLeaf& l) { return l.phase; });
+  int_array(s, "vertex_owner", "Int32", leaves, [](const OctreeLeaf& l) { return l.vertex_owner; });
+  int_array(s, "cone_kind", "Int32", leaves, [](const OctreeLeaf& l) { return l.cone_kind; });
+  int_array(s, "protected_by", "Int32", leaves, [](const OctreeLeaf& l) { return l.protected_by; });
   s << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return s.str();
 }
 
-}  // namespace
+struct OctreeRun {
+  std::string input, output;
+  bool generic = false;
+  double seconds = 0;  // build_octree, leaf description included
+};
 
-// The 3D size field of `pqmesh octree --size-field` and of `pqmesh mesh` on 3D
-// input (cmd_mesh3.cpp declares it; docs/FORMATS.md "3D size fields"): one
-// point per line, `x y z size`; the errors of the 2D reader
-// (src/io/read_size_field.cpp), with four fields instead of three.
-mv3d::SizeField3 read_size_field3(const std::string& path) {
-  detail::TextSource src(path);
-  mv3d::SizeField3 field;
-  field.path = path;
-  static constexpr const char* kNames[4] = {"x", "y", "z", "size"};
-  detail::TextRecord record;
-  while (src.next_record(record)) {
-    if (record.tokens.size() != 4)
-      src.fail(ErrorCode::WrongCount, "expected 4 fields 'x y z size', found " + std::to_string(record.tokens.size()),
-               record.line);
-    double v[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) {
-      const std::string_view token = record.tokens[static_cast<std::size_t>(i)];
-      if (!detail::parse_double(token, v[i]))
-        src.fail(ErrorCode::Syntax, std::string(kNames[i]) + " is not a number: '" + std::string(token) + "'", record.line);
-      if (!std::isfinite(v[i]))
-        src.fail(ErrorCode::NonFinite, std::string(kNames[i]) + " is not finite: '" + std::string(token) + "'", record.line);
-    }
-    if (!(v[3] > 0))
-      src.fail(ErrorCode::Syntax, "size must be positive, found '" + std::string(record.tokens[3]) + "'", record.line);
-    field.points.push_back({v[0], v[1], v[2]});
-    field.sizes.push_back(v[3]);
-    field.lines.push_back(record.line);
+void print_octree_summary(const OctreeRun& run, const Domain3& domain, const OctreeReport& r) {
+  std::int64_t protected_leaves = 0, duplicate_leaves = 0;
+  std::int64_t per_kind[kOctreeLeafKinds] = {};
+  for (const OctreeLeaf& leaf : r.leaves) {
+    protected_leaves += leaf.protected_box ? 1 : 0;
+    duplicate_leaves += leaf.duplicate ? 1 : 0;
+    ++per_kind[leaf.cone_kind];
   }
-  if (field.points.empty()) src.fail(ErrorCode::WrongCount, "the size field lists no points", src.last_line());
-  return field;
+  std::cout << "input      " << run.input << " (3D, " << domain.plc.vertices.size() << " vertices, "
+            << domain.edges.size() << " edges, " << domain.plc.facets.size() << " facets)\n"
+            << "leaves     " << r.leaves.size() << " (" << r.outside_leaves << " outside P, " << protected_leaves
+            << " protected, " << duplicate_leaves << " on duplicated cubes)\n"
+            << "depth      " << r.depth << " (root side " << r.root_size << ")\n"
+            << "grid       "
+            << (run.generic ? "generic, planes shifted by " + fmt(Vec3{r.grid_offset[0], r.grid_offset[1], r.grid_offset[2]})
+                        : std::string("aligned"))
+            << '\n'
+            << "splits     size " << r.splits_size << ", vertex " << r.splits_vertex << ", centering "
+            << r.splits_centering << ", edge " << r.splits_edge << ", edge-separate " << r.splits_edge_separate
+            << ", facet " << r.splits_facet << ", facet-separate " << r.splits_facet_separate << ", balance "
+            << r.splits_balance << '\n'
+            << "duplicates " << r.duplicates_created << " created\n"
+            << "components " << r.components_split << " at splits, " << r.components_extended
+            << " extended boxes, " << r.components_adjacency << " adjacency queries\n"
+            << "vertex boxes " << r.vertex_boxes << '\n';
+  std::cout << "kinds     ";
+  for (int k = 0; k < kOctreeLeafKinds; ++k)
+    std::cout << (k ? ", " : " ") << octree_leaf_kind_name(k) << ' ' << per_kind[k];
+  std::cout << '\n' << "phases     (leaves at the end, seconds)";
+  for (std::size_t p = 0; p < r.phases.size(); ++p)
+    std::cout << (p % 3 == 0 ? "\n          " : ",") << ' ' << r.phases[p].name << ' ' << r.phases[p].leaves_at_end
+              << ' ' << r.phases[p].seconds << " s";
+  std::cout << '\n'
+            << "time       " << run.seconds << " s\n"
+            << "output     " << run.output << " (VTK hexahedra; cell data level, component, duplicate, protected,\n"
+            << "           phase " << octree_phase_name(0) << "=0 vertex=1 centering=2 edge=3 facet=4 "
+            << "balance=5 size=6\n"
+            << "           edge-separate=7 facet-separate=8, vertex_owner, cone_kind (0 outside, 1 empty,\n"
+            << "           2 vertex cone, 3 edge cone, 4 facet cone, 5 two facets, 6 other), protected_by (the\n"
+            << "           phase number of the step that protected it, 0 if unprotected))\n";
 }
+
+}  // namespace
 
 int run_octree(const std::vector<std::string>& argv) {
   const Args args(argv, {"--quiet", "--no-merge", "--generic-grid"},
@@ -156,7 +129,7 @@ int run_octree(const std::vector<std::string>& argv) {
     throw UsageError("the octree is written as .vtu; OUTPUT must end in .vtu");
   check_output_directory(output);
 
-  mv3d::OctreeOptions options;
+  OctreeOptions3 options;
   if (args.option("--max-size")) {
     options.max_size = args.number("--max-size", 0);  // throws UsageError unless a finite number
     if (!(options.max_size > 0))
@@ -172,61 +145,11 @@ int run_octree(const std::vector<std::string>& argv) {
     return kExitInvalidInput;
   }
   const auto start = std::chrono::steady_clock::now();
-  const bool generic = options.generic_grid;
-  mv3d::OctreeBuilder builder(*domain, std::move(options));
-  builder.build();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const std::vector<std::int32_t> leaves = builder.leaves_by_id();
-  const std::vector<mv3d::LeafKind> kinds = leaf_kinds(builder, leaves);
-  write_text_file_atomic(output, leaves_vtu(builder, leaves, kinds));
-
-  if (!args.flag("--quiet")) {
-    const mv3d::OctreeStats& s = builder.stats();
-    std::int64_t protected_leaves = 0, duplicate_leaves = 0;
-    int deepest = 0;
-    for (const std::int32_t n : leaves) {
-      protected_leaves += builder.tree().is_protected(n) ? 1 : 0;
-      duplicate_leaves += is_duplicate(builder.tree(), n) ? 1 : 0;
-      deepest = std::max(deepest, builder.tree().level(n));
-    }
-    std::cout << "input      " << input << " (3D, " << domain->plc.vertices.size() << " vertices, "
-              << domain->edges.size() << " edges, " << domain->plc.facets.size() << " facets)\n"
-              << "leaves     " << s.leaves << " (" << s.outside_leaves << " outside P, " << protected_leaves
-              << " protected, " << duplicate_leaves << " on duplicated cubes)\n"
-              << "depth      " << deepest << " (root side " << builder.tree().root().size << ")\n"
-              << "grid       "
-              << (generic ? "generic, planes shifted by " + fmt(Vec3{builder.tree().root().offset[0],
-                                                                     builder.tree().root().offset[1],
-                                                                     builder.tree().root().offset[2]})
-                          : std::string("aligned"))
-              << '\n'
-              << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", centering " << s.splits_centering << ", edge "
-              << s.splits_edge << ", edge-separate " << s.splits_edge_separate << ", facet " << s.splits_facet
-              << ", facet-separate " << s.splits_facet_separate << ", balance " << s.splits_balance << '\n'
-              << "duplicates " << s.duplicates << " created\n"
-              << "components " << s.components_split << " at splits, " << s.components_extended
-              << " extended boxes, " << s.components_adjacency << " adjacency queries\n"
-              << "vertex boxes " << s.vertex_boxes << '\n';
-    std::int64_t per_kind[mv3d::kLeafKinds] = {};
-    for (const std::int32_t n : leaves) ++per_kind[static_cast<int>(kinds[static_cast<std::size_t>(n)])];
-    std::cout << "kinds     ";
-    for (int k = 0; k < mv3d::kLeafKinds; ++k)
-      std::cout << (k ? ", " : " ") << mv3d::to_string(static_cast<mv3d::LeafKind>(k)) << ' ' << per_kind[k];
-    std::cout << '\n';
-    std::cout << "phases     (leaves at the end, seconds)";
-    for (int p = 0; p < mv3d::OctreeStats::kPhases; ++p)
-      std::cout << (p % 3 == 0 ? "\n          " : ",") << ' ' << mv3d::OctreeStats::kPhaseNames[p] << ' '
-                << s.phase_leaves[p] << ' ' << s.phase_seconds[p] << " s";
-    std::cout << '\n'
-              << "time       " << seconds << " s\n"
-              << "output     " << output << " (VTK hexahedra; cell data level, component, duplicate, protected,\n"
-              << "           phase " << phase_name(mv3d::OctPhase::Root) << "=0 vertex=1 centering=2 edge=3 facet=4 "
-              << "balance=5 size=6\n"
-              << "           edge-separate=7 facet-separate=8, vertex_owner, cone_kind (0 outside, 1 empty,\n"
-              << "           2 vertex cone, 3 edge cone, 4 facet cone, 5 two facets, 6 other), protected_by (the\n"
-              << "           phase number of the step that protected it, 0 if unprotected))\n";
-  }
+  const OctreeReport report = build_octree(*domain, options);
+  const OctreeRun run{input, output, options.generic_grid,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  write_text_file_atomic(output, leaves_vtu(report.leaves));
+  if (!args.flag("--quiet")) print_octree_summary(run, *domain, report);
   return kExitOk;
 }
 

@@ -1,52 +1,26 @@
 #pragma once
 // Per-element quality as cell data for .vtu output (io does not depend on
-// quality; the CLI computes the fields and hands them to the writer). Computed
-// element by element straight into the three fields, without a per-element
-// record array: at a few million elements that array would be the process's
-// peak memory. The mesh must have valid indices (it passed check_mesh, or was
-// read and validated). The fields are display values, written to .vtu as
-// Float32 (CellField::single_precision): half the bytes of Float64.
-// Tetrahedra go through TetrahedronQualityMemo: the same tetrahedron_quality
-// doubles, computed once per shape (the octree repeats a few thousand shapes).
-#include <cstddef>
+// quality; the CLI computes the fields, pqmesh/quality_fields.hpp, and hands
+// them to the writer). The fields are display values, written as Float32
+// (CellField::single_precision): half the bytes of Float64.
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "pqmesh/mesh.hpp"
 #include "pqmesh/mesh_io.hpp"
-#include "pqmesh/quality.hpp"
-#include "quality/tetrahedron_quality_memo.hpp"
+#include "pqmesh/quality_fields.hpp"
 
 namespace pqmesh::cli {
 
-inline std::vector<CellField> quality_fields(const TriMesh2& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_angle", {}, true}, {"max_angle", {}, true}};
-  for (auto& f : fields) f.values.resize(mesh.triangles.size());
-  const auto& v = mesh.vertices;
-  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
-    const auto& t = mesh.triangles[e];
-    const TriQuality q = triangle_quality(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
-                                          v[static_cast<std::size_t>(t[2])]);
-    fields[0].values[e] = q.aspect_ratio;
-    fields[1].values[e] = q.min_angle_deg;
-    fields[2].values[e] = q.max_angle_deg;
-  }
-  return fields;
-}
-
-inline std::vector<CellField> quality_fields(const TetMesh3& mesh) {
-  std::vector<CellField> fields = {{"aspect_ratio", {}, true}, {"min_dihedral", {}, true}, {"max_dihedral", {}, true}};
-  for (auto& f : fields) f.values.resize(mesh.tetrahedra.size());
-  const auto& v = mesh.vertices;
-  TetrahedronQualityMemo measure;
-  for (std::size_t e = 0; e < mesh.tetrahedra.size(); ++e) {
-    const auto& t = mesh.tetrahedra[e];
-    const TetQuality q = measure(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
-                                 v[static_cast<std::size_t>(t[2])], v[static_cast<std::size_t>(t[3])]);
-    fields[0].values[e] = q.aspect_ratio;
-    fields[1].values[e] = q.min_dihedral_deg;
-    fields[2].values[e] = q.max_dihedral_deg;
-  }
-  return fields;
+// 2D: aspect_ratio, min_angle, max_angle; 3D: aspect_ratio, min_dihedral, max_dihedral.
+template <class Mesh>
+std::vector<CellField> quality_cell_fields(const Mesh& mesh) {
+  constexpr bool kTets = std::is_same_v<Mesh, TetMesh3>;
+  QualityFields q = quality_fields(mesh);
+  return {{"aspect_ratio", std::move(q.aspect_ratio), true},
+          {kTets ? "min_dihedral" : "min_angle", std::move(q.min_angle), true},
+          {kTets ? "max_dihedral" : "max_angle", std::move(q.max_angle), true}};
 }
 
 }  // namespace pqmesh::cli

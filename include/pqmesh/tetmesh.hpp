@@ -52,6 +52,11 @@ struct TetSizeField {
   std::string path;           // file it came from, empty when built in memory
 };
 
+// Reads a size field file, one 'x y z size' per line ('#' comments); throws
+// ParseError (WrongCount, Syntax, NonFinite) naming the file line. The 2D
+// reader and the format are in pqmesh/quadmesh.hpp and docs/FORMATS.md.
+TetSizeField read_size_field3(const std::string& path);
+
 // Progress of one run, reported at the start and end of every phase.
 struct TetMeshProgress {
   const char* phase = "";          // "octree", "classify", "tetrahedra", "boundary", "done"

@@ -1,11 +1,12 @@
-// read_size_field2: the point-size file of `pqmesh mesh --size-field`.
+// read_size_field2 / read_size_field3: the point-size files of
+// `pqmesh mesh --size-field` (and `pqmesh octree --size-field`).
 //
-// Format (one point per line):   x y size
+// Format (one point per line):   x y size   (2D)   or   x y z size   (3D)
 //   '#' starts a comment that runs to the end of the line; blank lines and
 //   comment-only lines are ignored. Numbers are whatever parse_double accepts
 //   (decimal or exponent form, optional sign).
 // Errors (ParseError with the file path and the 1-based line):
-//   a line with other than three fields   WrongCount
+//   a line with other than D + 1 fields   WrongCount
 //   a field that is not a number          Syntax
 //   a NaN or infinite value (also an      NonFinite
 //     overflowing literal such as 1e999)
@@ -16,28 +17,33 @@
 //                                          size field", which is not what the
 //                                          user asked for.
 // The reader only checks the file; what the sizes mean (f(x) = min_i size_i +
-// |x - p_i|, thesis §1.1's size function) is quad_mesh's business.
+// |x - p_i|, thesis §1.1's size function) is the mesher's business.
 #include <cmath>
 #include <string>
 
 #include "io/read_text_tokens.hpp"
 #include "pqmesh/quadmesh.hpp"
+#include "pqmesh/tetmesh.hpp"
 
 namespace pqmesh {
+namespace {
 
-SizeField2 read_size_field2(const std::string& path) {
+// Reads D coordinates and a size per line into `field` (points, sizes, lines, path).
+template <int D, class Field>
+Field read_point_sizes(const std::string& path) {
+  static constexpr const char* kNames[4] = {"x", "y", D == 2 ? "size" : "z", "size"};
+  static constexpr const char* kFormat = D == 2 ? "'x y size'" : "'x y z size'";
   detail::TextSource src(path);
-  SizeField2 field;
+  Field field;
   field.path = path;
-  static constexpr const char* kNames[3] = {"x", "y", "size"};
   detail::TextRecord record;
   while (src.next_record(record)) {
-    if (record.tokens.size() != 3) {
-      src.fail(ErrorCode::WrongCount,
-               "expected 3 fields 'x y size', found " + std::to_string(record.tokens.size()), record.line);
+    if (record.tokens.size() != D + 1) {
+      src.fail(ErrorCode::WrongCount, "expected " + std::to_string(D + 1) + " fields " + kFormat + ", found " +
+                                          std::to_string(record.tokens.size()), record.line);
     }
-    double values[3] = {0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
+    double values[D + 1] = {};
+    for (int i = 0; i <= D; ++i) {
       const std::string_view token = record.tokens[static_cast<std::size_t>(i)];
       if (!detail::parse_double(token, values[i])) {
         src.fail(ErrorCode::Syntax, std::string(kNames[i]) + " is not a number: '" + std::string(token) + "'",
@@ -48,16 +54,23 @@ SizeField2 read_size_field2(const std::string& path) {
                  record.line);
       }
     }
-    if (!(values[2] > 0)) {
-      src.fail(ErrorCode::Syntax, "size must be positive, found '" + std::string(record.tokens[2]) + "'",
+    if (!(values[D] > 0)) {
+      src.fail(ErrorCode::Syntax, "size must be positive, found '" + std::string(record.tokens[D]) + "'",
                record.line);
     }
-    field.points.push_back({values[0], values[1]});
-    field.sizes.push_back(values[2]);
+    if constexpr (D == 2) field.points.push_back({values[0], values[1]});
+    if constexpr (D == 3) field.points.push_back({values[0], values[1], values[2]});
+    field.sizes.push_back(values[D]);
     field.lines.push_back(record.line);
   }
   if (field.points.empty()) src.fail(ErrorCode::WrongCount, "the size field lists no points", src.last_line());
   return field;
 }
+
+}  // namespace
+
+SizeField2 read_size_field2(const std::string& path) { return read_point_sizes<2, SizeField2>(path); }
+
+TetSizeField read_size_field3(const std::string& path) { return read_point_sizes<3, TetSizeField>(path); }
 
 }  // namespace pqmesh

@@ -21,6 +21,9 @@ expect() {
 contains() {  # contains FILE PATTERN DESCRIPTION
   if grep -qE -- "$2" "$1"; then ok; else fail "$3: '$2' not in $(head -c 600 "$1")"; fi
 }
+lacks() {  # lacks FILE PATTERN DESCRIPTION: no line of FILE matches PATTERN
+  if grep -qE -- "$2" "$1"; then fail "$3: '$2' found in $(head -c 600 "$1")"; else ok; fi
+}
 absent() {  # absent PATH DESCRIPTION
   if [[ -e $1 ]]; then fail "$2: $1 exists"; else ok; fi
 }

@@ -7,7 +7,7 @@ source "$(dirname "$0")/harness.sh"
 
 # Grid-aligned models mesh completely on the aligned grid.
 for m in cube l_block; do
-  expect 0 "mesh $m" -- "$pqmesh" mesh "$data/3d/$m.poly" -o "$work/$m.vtu" --aligned-grid
+  expect 0 "mesh $m" -- "$pqmesh" mesh "$data/3d/$m.poly" -o "$work/$m.vtu" --aligned-grid --lfs-integral
   [[ -s $work/$m.vtu ]] && ok || fail "mesh $m wrote no file"
   empty "$work/err" "mesh $m: stderr is not a terminal, so no progress and no message"
   for pat in "^input +.*$m.poly \(3D, [0-9]+ vertices" "^alpha +alpha = 90 deg" \
