@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -6,7 +6,7 @@
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

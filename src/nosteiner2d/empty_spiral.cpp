@@ -17,7 +17,7 @@
 
 #include "nosteiner2d/face_grid.hpp"
 #include "nosteiner2d/interference.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -42,7 +42,7 @@
 #include <vector>
 
 #include "pqmesh/mesh.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/vec.hpp"
 
 namespace pqmesh::detail {

@@ -14,7 +14,7 @@
 #include <limits>
 #include <utility>
 
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {

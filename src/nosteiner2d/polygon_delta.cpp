@@ -19,7 +19,7 @@
 #include <cmath>
 #include <limits>
 
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -45,7 +45,7 @@
 
 #include "nosteiner2d/spoke_floor.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {

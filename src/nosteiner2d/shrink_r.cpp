@@ -24,7 +24,7 @@
 #include <sstream>
 
 #include "nosteiner2d/exact_corner.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh {

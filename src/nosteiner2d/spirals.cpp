@@ -15,7 +15,7 @@
 #include <numbers>
 
 #include "nosteiner2d/triangle_angles.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -6,7 +6,7 @@
 // strong interference on both sides of a corner, meet below the resolution of
 // doubles (docs/algorithm/nosteiner2d.md "Known limits"); the floor keeps every
 // spoke end (and hence Q and R) representable.
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh::detail {
 

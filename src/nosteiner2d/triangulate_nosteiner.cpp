@@ -19,7 +19,7 @@
 #include "nosteiner2d/quality_pass.hpp"
 #include "nosteiner2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -26,7 +26,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 

@@ -32,7 +32,7 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/quadmesh.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "predicates/predicates.hpp"

@@ -14,7 +14,7 @@
 
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh::test {
 

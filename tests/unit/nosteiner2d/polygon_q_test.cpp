@@ -17,7 +17,7 @@
 #include "cdt2d/constrained_delaunay.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "predicates/predicates.hpp"
 #include "support/paths.hpp"

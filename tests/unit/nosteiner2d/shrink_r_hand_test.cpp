@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "nosteiner2d/exact_corner.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {
 namespace {

@@ -29,7 +29,7 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/quadmesh_bound.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "predicates/predicates.hpp"

@@ -13,7 +13,7 @@
 
 #include "nosteiner2d/spoke_floor.hpp"
 #include "pqmesh/domain.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"

@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "pqmesh/domain.hpp"
-#include "pqmesh/nosteiner.hpp"
+#include "nosteiner2d/stages.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
