@@ -7,7 +7,8 @@
 #             "missing" for Triangle)
 set -euo pipefail
 
-packages=(g++ cmake make libgtest-dev libgmock-dev libgmp-dev python3 python3-numpy python3-meshio gmsh zlib1g-dev liblz4-dev liblzma-dev python3-vtk9)
+# The library, its tests and the file-format clients (meshio, gmsh, VTK below).
+packages=(g++ cmake make libgtest-dev libgmock-dev libgmp-dev python3 python3-numpy python3-meshio gmsh zlib1g-dev liblz4-dev liblzma-dev)
 # The Python module (python/) and its tests.
 packages+=(pybind11-dev python3-dev python3-pytest python3-vtk9)
 optional=()
