@@ -111,7 +111,7 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
     place of points), e.g. from read_domain.
 
     max_size      no octree box side longer than this (CLI --max-size)
-    size_field    a pair (points (K, 3), sizes (K,)): the size asked for at x is
+    size_field    a file of "x y z size" lines, or a pair (points (K, 3), sizes (K,)): the size asked for at x is
                   min over i of sizes[i] + |x - points[i]|
     aligned_grid  octree planes on the bounding box's dyadic grid (--aligned-grid)
     warp          the warping of thesis 4.3 (on in the CLI)

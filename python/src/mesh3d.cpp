@@ -13,10 +13,12 @@
 namespace pqmesh::python {
 namespace {
 
-// (points (K, 3), sizes (K,)): the size asked for at x is min_i sizes[i] + |x - points[i]|.
+// A size-field file (read_size_field3: "x y z size" lines) or a pair (points
+// (K, 3), sizes (K,)): the size asked for at x is min_i sizes[i] + |x - points[i]|.
 TetSizeField size_field3(py::handle obj) {
+  if (py::isinstance<py::str>(obj)) return read_size_field3(obj.cast<std::string>());
   if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
-    throw py::value_error("size_field must be a pair (points, sizes)");
+    throw py::value_error("size_field must be a file name or a pair (points, sizes)");
   TetSizeField field;
   field.points = to_points3(obj[py::int_(0)], "size_field points");
   field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());

@@ -140,3 +140,21 @@ def test_size_field_refines_near_its_point():
     (plain_near, plain_far), (graded_near, graded_far) = near_and_far(plain), near_and_far(graded)
     assert graded_near > 10 * plain_near  # fine next to the point
     assert graded_far == plain_far  # the field asks for nothing finer far from it
+
+
+def test_size_field_file_is_the_pair(tmp_path):
+    path = tmp_path / "field.txt"
+    path.write_text("# x y z size\n0 0 0 0.05\n")
+    from_file = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, size_field=str(path))
+    from_pair = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, size_field=([(0, 0, 0)], [0.05]))
+    assert_valid(from_file)
+    assert np.array_equal(from_file.points, from_pair.points)
+    assert np.array_equal(from_file.tetrahedra, from_pair.tetrahedra)
+
+
+def test_size_field_file_error_names_the_line(tmp_path):
+    path = tmp_path / "bad_field.txt"
+    path.write_text("0 0 0 0.05\n0 0 0.5\n")
+    with pytest.raises(pqmesh.ParseError) as error:
+        pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, size_field=str(path))
+    assert error.value.line == 2 and error.value.path == str(path)
