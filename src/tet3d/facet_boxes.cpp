@@ -92,8 +92,9 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   // the result and the final pass is skipped.
   std::unique_ptr<BoxAssembler> done;
   if (options.warp) {
-    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), nullptr,
-                              hooks.reflex_copies);
+    WarpOptions first_warp;
+    first_warp.reflex_copies = hooks.reflex_copies;
+    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), first_warp);
     release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
@@ -153,8 +154,12 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       const std::vector<std::int32_t> inverted = trial->bad_jobs();
       trial.reset();
       if (!candidates) candidates = warp_candidates(tree, corners, domain, jobs);
-      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates, &frozen, hooks.reflex_copies, edge_boxes,
-                                         &second_only);
+      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates,
+                                         {.frozen = &frozen,
+                                          .reflex_copies = hooks.reflex_copies,
+                                          .edge_boxes = edge_boxes,
+                                          .second_only = &second_only,
+                                          .out_of_face = false});
       if (hooks.partial_trials) {
         if (!job_boxes) job_boxes.emplace(tree, jobs);
         scope = job_boxes->touching(changed_points(warps, next), inverted);
@@ -181,8 +186,12 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       const double worst_before = done->worst_shape();
       done.reset();
       release_free_heap();
-      WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), &frozen,
-                                          hooks.reflex_copies, edge_boxes, &second_only, true);
+      WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs),
+                                          {.frozen = &frozen,
+                                           .reflex_copies = hooks.reflex_copies,
+                                           .edge_boxes = edge_boxes,
+                                           .second_only = &second_only,
+                                           .out_of_face = true});
       release_free_heap();
       if (wider.out_of_face > 0) {
         std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`

@@ -86,30 +86,42 @@ struct EdgeBoxBounds {
   GridPoint lo, hi;
   int edge = -1;
 };
-// `frozen` (may be null): points never moved (counted in frozen_left when they would be).
-// `reflex_copies` false (detail::BoxMeshTestHooks only): no Fig. 4.7 copies,
-// a slot vertex stays (reflex_left).
-// `edge_boxes`: the edge boxes whose faces through a close box edge are
-// translated (warp.cpp, "face translations"), each face by the largest
-// 2^-k (k = 0..4) of its move that keeps its points' side decisions and
-// clearances (warp.cpp, "adaptive length"); empty: none.
-// `second_only` (may be null): points whose move inverted a tetrahedron once
-// (facet_boxes.cpp, rebuild loop), each with the axes (bit a) on which it
-// lies on a face of that tetrahedron's box: such a point gets its second pass
-// alone from the prewarped point (its first-pass and face moves dropped),
-// without the components along those axes (a face bent by the first pass
-// past an edge-box apex does not freeze the point's move off its facet);
-// when nothing is left or a rule refuses it, it stays (frozen_left). The entry's
-// bits: a for the reporting box's low face along axis a, 3 + a for its high
-// face. `out_of_face`: a component along such an axis that points out of the
-// reporting box is kept (counted in out_of_face); mesh_boxes takes that
-// table only when its mesh is valid and its worst tetrahedron better.
+// What a warp run is asked to leave, add or drop besides §4.3's two passes
+// (the defaults: the thesis's passes with Fig. 4.7's copies, nothing frozen,
+// no face translations, no reported points).
+struct WarpOptions {
+  // Points never moved (counted in frozen_left when they would be); null:
+  // none. The set is the caller's and must outlive the call.
+  const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr;
+  // Fig. 4.7's copies per facet for a vertex in a reflex slot; false
+  // (detail::BoxMeshTestHooks only): no copies, such a vertex stays
+  // (reflex_left).
+  bool reflex_copies = true;
+  // The edge boxes whose faces through a close box edge are translated
+  // (warp.cpp find_face_shifts, docs/algorithm/tet3d_warp.md "Face
+  // translations"), each face by the largest 2^-k (k = 0..4) of its move
+  // that keeps its points' side decisions and clearances (warp.cpp
+  // fit_face_shifts); empty: none.
+  std::span<const EdgeBoxBounds> edge_boxes;
+  // Points whose move inverted a tetrahedron once (facet_boxes.cpp, rebuild
+  // loop), each with the axes on which it lies on a face of that
+  // tetrahedron's box; null: none. Such a point gets its second pass alone
+  // from the prewarped point (its first-pass and face moves dropped), without
+  // the components along those axes (a face bent by the first pass past an
+  // edge-box apex does not freeze the point's move off its facet); when
+  // nothing is left or a rule refuses it, it stays (frozen_left). The entry's
+  // bits: a for the reporting box's low face along axis a, 3 + a for its high
+  // face.
+  const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr;
+  // With second_only: a component along such an axis that points out of the
+  // reporting box is kept (counted in out_of_face); false: dropped (counted
+  // in out_of_face_left). mesh_boxes takes the table with them only when its
+  // mesh is valid and its worst tetrahedron better
+  // (docs/algorithm/tet3d_warp.md "One decision per shared face").
+  bool out_of_face = false;
+};
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                            const WarpCandidates& candidates,
-                            const std::unordered_set<GridPoint, GridPointHash>* frozen = nullptr,
-                            bool reflex_copies = true, std::span<const EdgeBoxBounds> edge_boxes = {},
-                            const std::unordered_map<GridPoint, std::uint8_t, GridPointHash>* second_only = nullptr,
-                            bool out_of_face = false);
+                            const WarpCandidates& candidates, const WarpOptions& options = {});
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {

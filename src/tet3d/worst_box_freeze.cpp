@@ -64,8 +64,12 @@ WorstBoxFreeze freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe,
     GridPointSet next_frozen = kept_frozen;
     next_frozen.insert(points.begin(), points.end());
     if (!candidates) candidates = warp_candidates(pass.tree, pass.corners, pass.domain, pass.jobs);
-    WarpTable next = warp_box_vertices(pass.tree, pass.corners, pass.domain, *candidates, &next_frozen,
-                                       recipe.reflex_copies, recipe.edge_boxes, recipe.second_only, recipe.out_of_face);
+    WarpTable next = warp_box_vertices(pass.tree, pass.corners, pass.domain, *candidates,
+                                       {.frozen = &next_frozen,
+                                        .reflex_copies = recipe.reflex_copies,
+                                        .edge_boxes = recipe.edge_boxes,
+                                        .second_only = recipe.second_only,
+                                        .out_of_face = recipe.out_of_face});
     const std::vector<std::int32_t> scope = boxes.touching(changed_points(table, next), {});
     const auto trial = partial_trial(pass, next, scope);
     if (!trial->bad().empty()) break;

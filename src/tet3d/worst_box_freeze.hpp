@@ -26,7 +26,7 @@ namespace pqmesh::tet3d {
 using GridPointSet = std::unordered_set<GridPoint, GridPointHash>;
 
 // What the rebuild loop made the accepted table from, besides its frozen set
-// (warp_box_vertices' parameters of the same names).
+// (the WarpOptions fields of the same names, warp.hpp).
 struct WarpRecipe {
   bool reflex_copies = true;
   std::span<const EdgeBoxBounds> edge_boxes;

@@ -1,6 +1,6 @@
 // An edge box whose P edge E runs 3.5 deg off one of its faces (every-run
 // seed 30): a point reported by the rebuild loop keeps its second-pass move
-// within the box faces (warp.cpp `second_only`). Checked through tet_mesh's
+// within the box faces (WarpOptions::second_only, warp.hpp). Checked through tet_mesh's
 // pipeline and check_mesh: aspect x alpha <= 2,500.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Out-of-face moves of reported points, decided once per shared face
-// (facet_boxes.cpp mesh_boxes, warp.cpp `out_of_face`), through tet_mesh's
+// (facet_boxes.cpp mesh_boxes, WarpOptions::out_of_face), through tet_mesh's
 // pipeline and check_mesh. Every-run seed 30 (the move improves the edge
 // box): aspect x alpha <= 850. Every-run seed 100 (the move would bend the
 // face of the box across): aspect x alpha <= 452.

@@ -103,7 +103,9 @@ TEST(ReflexSlotCopies, OneCopyPerFacetEachMovedOffItsOwnFacet) {
   const std::vector<WarpCandidateRecord> cand = {{v, {f, g}, {wx, wy}, {}, 0, {}}};
 
   // Without copies (reflex_copies false): v stays, counted.
-  const WarpTable before = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, false);
+  WarpOptions no_copies;
+  no_copies.reflex_copies = false;
+  const WarpTable before = warp_box_vertices(t, corners, d, make_warp_candidates(cand), no_copies);
   EXPECT_EQ(before.reflex_left, 1);
   EXPECT_EQ(before.find(v), nullptr);
   EXPECT_EQ(before.copy_count(), 0u);

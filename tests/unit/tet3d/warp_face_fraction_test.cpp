@@ -77,7 +77,9 @@ TEST(WarpFaceFraction, TranslationStopsShortOfEdgeLine) {
     EXPECT_EQ(orient3d(a, b, p + m, q + m) == before, len < 3.0 / 64) << len;
   }
   const std::vector<EdgeBoxBounds> boxes = {{corner_of(t, 0), corner_of(t, 7), edge}};
-  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, true, boxes);
+  WarpOptions translated;
+  translated.edge_boxes = boxes;
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), translated);
   for (const GridPoint& pt : {c000, c001, c010, c011}) {
     const Warp* moved = w.find(pt);
     ASSERT_NE(moved, nullptr);

@@ -61,7 +61,9 @@ TEST(WarpFaceShift, EdgeBoxFaceThroughACloseBoxEdgeIsTranslated) {
   const WarpTable plain = warp_box_vertices(t, corners, d, make_warp_candidates(cand));
   EXPECT_EQ(plain.find(m), nullptr);
   const std::vector<EdgeBoxBounds> boxes = {{corner_of(t, 0), corner_of(t, 7), edge}};
-  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), nullptr, true, boxes);
+  WarpOptions translated;
+  translated.edge_boxes = boxes;
+  const WarpTable w = warp_box_vertices(t, corners, d, make_warp_candidates(cand), translated);
   for (const GridPoint& p : {c000, c001, c010, c011, m}) {
     const Warp* moved = w.find(p);
     ASSERT_NE(moved, nullptr);
