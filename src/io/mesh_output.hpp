@@ -1,10 +1,10 @@
 #pragma once
 // Output plumbing shared by the mesh writers: a temporary file that becomes
-// the real file only on success (atomic writes, DESIGN.md §3 "never a partial
-// output file") and a buffered writer that formats numbers with std::to_chars
-// (no per-line string streams; shortest round-trip form for doubles, so the
-// same mesh always gives the same bytes and ASCII coordinates read back
-// bit-exactly).
+// the real file only on success (atomic writes: never a partial output file,
+// docs/DESIGN_RULES.md "Bad input and errors") and a buffered writer that
+// formats numbers with std::to_chars (no per-line string streams; shortest
+// round-trip form for doubles, so the same mesh always gives the same bytes
+// and ASCII coordinates read back bit-exactly).
 #include <bit>
 #include <cstdint>
 #include <cstdio>

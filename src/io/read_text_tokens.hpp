@@ -7,7 +7,7 @@
 //   next_token():  one whitespace-separated token at a time across lines
 //                  (ASCII STL, Medit).
 // Both report 1-based line numbers. fail() throws the ParseError every reader
-// uses, carrying the file path and line (DESIGN.md §9).
+// uses, carrying the file path and line (docs/DESIGN_RULES.md "Bad input and errors").
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -21,8 +21,8 @@
 //
 // The constant, made explicit (proved in docs/algorithm/nosteiner2d.md from
 // Theorems 17 and 21): every triangulation of P whose vertices on dP are the
-// vertices of P has min angle <= kUpperBoundConstant * g(P), with
-// kUpperBoundConstant = pi (1 + ln 2) ~= 5.32 (and trivially <= pi/3).
+// vertices of P has min angle <= kSteinerFreeBoundConstant * g(P), with
+// kSteinerFreeBoundConstant = pi (1 + ln 2) ~= 5.32 (and trivially <= pi/3).
 //
 // Exactness (docs/DESIGN_RULES.md "Exact decisions"): which faces interfere
 // (vertex ids), whether a vertex W is eligible (squared distance comparisons
