@@ -49,6 +49,8 @@ set(pqmesh_slow_patterns
   "QualityPass.ConstructionMeshesOfCorpus"
   "QuadMeshProperty.RandomPolygonsAreValidAndWellShaped"
   "QuadMeshProperty.HardGeneratorSettingsAreValid"
+  "MeshPolygonProperty.RandomPolygonsCertifiedAndNoLargerThanTheQuadtreeMesh"
+  "MeshPolygonProperty.HardGeneratorSettingsCertified"
   "Components2dProperty.AgainstGridOracle"
 )
 list(JOIN pqmesh_slow_patterns ":" PQMESH_SLOW_TESTS)

@@ -97,6 +97,38 @@ void print_lfs_integral_line(const MeshRun& run) {
             << '\n';
 }
 
+// Which construction made the mesh (mesh_polygon) and its counters: the
+// refined CDT of the input, or the quadtree (with the refined CDT's shortfall
+// when it was tried first), then the refinement.
+void print_construction(const MeshRun& run) {
+  const QuadMeshStats& s = run.result.stats;
+  if (s.refined_input) {
+    std::cout << "construct  refined CDT of the input (no quadtree): smallest angle " << fmt4(s.refined_input_min_angle)
+              << " deg, at least the bound\n";
+  } else {
+    std::cout << "construct  quadtree";
+    if (s.refined_input_triangles > 0)
+      std::cout << " (the refined CDT of the input, " << s.refined_input_triangles << " triangles, reached "
+                << fmt4(s.refined_input_min_angle) << " deg, below the bound)";
+    std::cout << '\n'
+              << "tree       " << s.leaves << " leaves (" << s.duplicates << " duplicates, " << s.outside_leaves
+              << " outside P)\n"
+              << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", edge " << s.splits_edge
+              << ", balance " << s.splits_balance << ", centering " << s.splits_centering << ", protection "
+              << s.splits_protection << '\n'
+              << "boxes      " << s.vertex_boxes << " vertex boxes (" << s.centered << " centered), " << s.warped
+              << " warped corners, " << s.edge_points << " edge points\n";
+  }
+  std::cout << "refine     "
+            << (run.options.refine_angle_degrees > 0
+                    ? "target " + fmt(run.options.refine_angle_degrees) + " deg: " + std::to_string(s.refine_points) +
+                          " points added, " +
+                          (s.refine_target_reached ? "reached (triangles at input angles < 60 deg excused)"
+                                                   : "not reached everywhere")
+                    : std::string("off"))
+            << '\n';
+}
+
 // One screen, labels padded to 11 columns as in `pqmesh info`.
 void print_summary(const Domain2& domain, const MeshRun& run) {
   const TriMesh2& mesh = run.result.mesh;
@@ -133,22 +165,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
             << (run.min_angle.min >= bound - 1e-9 ? "bound holds" : "BELOW THE BOUND") << '\n'
             << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
   print_lfs_integral_line(run);
-  std::cout << "tree       " << s.leaves << " leaves (" << s.duplicates << " duplicates, " << s.outside_leaves
-            << " outside P)\n"
-            << "splits     size " << s.splits_size << ", vertex " << s.splits_vertex << ", edge " << s.splits_edge
-            << ", balance " << s.splits_balance << ", centering " << s.splits_centering << ", protection "
-            << s.splits_protection << '\n'
-            << "boxes      " << s.vertex_boxes << " vertex boxes (" << s.centered << " centered), " << s.warped
-            << " warped corners, " << s.edge_points << " edge points\n"
-            << "refine     "
-            << (run.options.refine_angle_degrees > 0
-                    ? "target " + fmt(run.options.refine_angle_degrees) + " deg: " + std::to_string(s.refine_points) +
-                          " points added, " +
-                          (s.refine_target_reached ? "reached (triangles at input angles < 60 deg excused)"
-                                                   : "not reached everywhere")
-                    : std::string("off"))
-            << '\n'
-            << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
+  print_construction(run);
+  std::cout << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
             << ", triangulate " << fmt_seconds(s.seconds_triangulate) << "; mesh " << fmt_seconds(run.seconds_mesh)
             << ", check " << fmt_seconds(run.seconds_check)
             << (run.lfs_integral ? ", lfs " + fmt_seconds(run.seconds_lfs) : std::string()) << '\n'
@@ -162,7 +180,7 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
                                                  "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
-                                                 "--aligned-grid", "--compress", "--lfs-integral"};
+                                                 "--aligned-grid", "--compress", "--lfs-integral", "--quadtree"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
 
@@ -199,7 +217,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   // default: a 1 MiB threshold raised data/3d/plate_holes.poly's peak by about
   // 2 MB.)
   set_large_page_threshold(std::size_t{1} << 20);
-  const Args args(argv, {"--quiet", "--protect-edges", "--compress", "--lfs-integral"},
+  const Args args(argv, {"--quiet", "--protect-edges", "--compress", "--lfs-integral", "--quadtree"},
                   {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
   args.expect_positional(1, 1);
   MeshRun run;
@@ -208,6 +226,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   check_output_directory(run.output);
   run.options.max_size = max_size_option(args);
   run.options.protect_edges = args.flag("--protect-edges");
+  run.options.quadtree = args.flag("--quadtree");
   if (args.option("--refine-angle")) {
     const double a = args.number("--refine-angle", 0);  // throws UsageError unless a finite number
     if (!(a >= 0 && a <= 30))
@@ -224,7 +243,7 @@ int run_mesh(const std::vector<std::string>& argv) {
   if (const auto field = args.option("--size-field")) run.options.size_field = read_size_field2(*field);
 
   auto start = Clock::now();
-  run.result = quad_mesh(domain, run.options);
+  run.result = mesh_polygon(domain, run.options);
   run.seconds_mesh = seconds_since(start);
 
   start = Clock::now();

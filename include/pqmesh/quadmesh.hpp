@@ -42,6 +42,9 @@ struct QuadMeshOptions {
   // excused (docs/algorithm/quad2d.md "Delaunay refinement pass"). CLI
   // --refine-angle DEG.
   double refine_angle_degrees = 20;
+  // mesh_polygon only: skip the refined CDT of the input and mesh with the
+  // quadtree (quad_mesh). CLI --quadtree.
+  bool quadtree = false;
 };
 
 // Counters and timings of one run, for the CLI summary and the benchmark.
@@ -62,6 +65,13 @@ struct QuadMeshStats {
   std::int64_t refine_points = 0;     // vertices added by the refinement pass
   bool refine_target_reached = false; // every triangle not excused meets refine_angle_degrees
   double seconds_tree = 0, seconds_points = 0, seconds_triangulate = 0;
+  // mesh_polygon: the mesh is the refined CDT of the input (no quadtree); its
+  // smallest angle in degrees (also when it fell short of the bound and the
+  // quadtree meshed P, whose stats these are then), and, in that case, its
+  // triangle count.
+  bool refined_input = false;
+  double refined_input_min_angle = 0;
+  std::int64_t refined_input_triangles = 0;
 };
 
 struct QuadMeshResult {
@@ -72,6 +82,20 @@ struct QuadMeshResult {
 // Throws InvalidInput (a bad size field) naming the offending entry; never
 // returns a mesh that fails check_mesh (an internal failure throws InternalError).
 QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options = {});
+
+// The default 2D mesh (`pqmesh mesh`): without a size bound (no max_size, no
+// size field), no edge protection and with refinement on, first the
+// constrained Delaunay triangulation of the input alone, refined towards
+// refine_angle_degrees (cdt2d/refine.hpp: Ruppert's algorithm with
+// Shewchuk's small-angle rules, the same refinement quad_mesh ends with). It
+// is kept when its smallest angle is at least quad_mesh_angle_bound(alpha,
+// refine_angle_degrees) (pqmesh/quadmesh_bound.hpp), the bound quad_mesh
+// meets; otherwise, and in every other case, the result is quad_mesh's. So the
+// angle bound holds for every output. Boundary pieces carry the segment
+// markers as in quad_mesh. Cost: the refinement is capped at 64 n + 100000
+// new points for n input vertices (a run that hits the cap falls short of the
+// target and the quadtree meshes P); errors as quad_mesh.
+QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& options = {});
 
 // Parses a size-field file: one point per line "x y size" ('#' starts a
 // comment, blank lines ignored). Throws ParseError with the line on bad input.

@@ -67,7 +67,7 @@ def _domain(cls, domain, points, elements, markers, holes, regions):
 
 def triangulate(points=None, segments=None, segment_markers=None, holes=None, regions=None, *,
                 domain=None, max_size=None, size_field=None, refine_angle=20.0, protect_edges=False,
-                no_boundary_steiner=False, keep_better_cdt=True, thesis_fans=False, quality_pass=True):
+                quadtree=False, no_boundary_steiner=False, keep_better_cdt=True, thesis_fans=False, quality_pass=True):
     """Mesh a polygon with holes (`pqmesh mesh` on a 2D input); returns a TriMesh.
 
     points (N, 2), segments (S, 2) vertex ids, segment_markers (S,), holes (H, 2)
@@ -78,6 +78,7 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
     size_field     a file of "x y size" lines, or a pair (points (K, 2), sizes (K,))
     refine_angle   Delaunay refinement target in degrees, 0 (off) to 30 (--refine-angle)
     protect_edges  thesis 4.1.4-4.1.5 edge protection (--protect-edges)
+    quadtree       always the quadtree mesher, never the refined CDT of the input (--quadtree)
     no_boundary_steiner  thesis ch. 5: add points only strictly inside the polygon; every
                    boundary vertex is an input vertex (--no-boundary-steiner). With it,
                    refine_angle applies to the mesh of R, and keep_better_cdt=False,
@@ -96,8 +97,8 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
             raise ValueError("max_size, size_field and protect_edges do not apply with no_boundary_steiner")
         return _pqmesh.triangulate_without_boundary_steiner(
             domain, refine_angle, bool(keep_better_cdt), bool(thesis_fans), bool(quality_pass))
-    return _pqmesh.quad_mesh(domain, _positive("max_size", max_size), size_field, refine_angle,
-                             bool(protect_edges))
+    return _pqmesh.mesh_polygon(domain, _positive("max_size", max_size), size_field, refine_angle,
+                                bool(protect_edges), bool(quadtree))
 
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,

@@ -37,15 +37,19 @@ py::dict quad_stats(const QuadMeshStats& s) {
                   py::arg("splits_protection") = s.splits_protection, py::arg("vertex_boxes") = s.vertex_boxes,
                   py::arg("centered") = s.centered, py::arg("warped") = s.warped,
                   py::arg("edge_points") = s.edge_points, py::arg("refine_points") = s.refine_points,
-                  py::arg("refine_target_reached") = s.refine_target_reached);
+                  py::arg("refine_target_reached") = s.refine_target_reached,
+                  py::arg("refined_input") = s.refined_input,
+                  py::arg("refined_input_min_angle") = s.refined_input_min_angle,
+                  py::arg("refined_input_triangles") = s.refined_input_triangles);
 }
 
-py::object run_quad_mesh(std::shared_ptr<Domain2> domain, double max_size, py::object size_field, double refine_angle,
-                         bool protect_edges) {
+py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py::object size_field,
+                            double refine_angle, bool protect_edges, bool quadtree) {
   QuadMeshOptions options;
   options.max_size = max_size;
   options.refine_angle_degrees = refine_angle;
   options.protect_edges = protect_edges;
+  options.quadtree = quadtree;
   if (!size_field.is_none()) options.size_field = size_field2(size_field);
   QuadMeshResult result;
   AlphaResult alpha;
@@ -54,7 +58,7 @@ py::object run_quad_mesh(std::shared_ptr<Domain2> domain, double max_size, py::o
   {
     py::gil_scoped_release release;
     const auto start = std::chrono::steady_clock::now();
-    result = quad_mesh(*domain, options);
+    result = mesh_polygon(*domain, options);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     alpha = compute_alpha(domain->pslg.vertices, domain->loops);
     quality = quality_report(result.mesh);
@@ -115,8 +119,9 @@ py::object run_no_steiner(std::shared_ptr<Domain2> domain, double refine_angle, 
 }  // namespace
 
 void bind_mesh2d(py::module_& m) {
-  m.def("quad_mesh", &run_quad_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
-        py::arg("refine_angle"), py::arg("protect_edges"), "quad_mesh(domain, options); see pqmesh.triangulate.");
+  m.def("mesh_polygon", &run_mesh_polygon, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
+        py::arg("refine_angle"), py::arg("protect_edges"), py::arg("quadtree"),
+        "mesh_polygon(domain, options); see pqmesh.triangulate.");
   m.def("triangulate_without_boundary_steiner", &run_no_steiner, py::arg("domain"), py::arg("refine_angle"),
         py::arg("keep_better_cdt"), py::arg("thesis_fans"), py::arg("quality_pass"),
         "triangulate_without_boundary_steiner(domain, options); see pqmesh.triangulate.");

@@ -26,7 +26,7 @@ def test_square_from_arrays():
     assert report.mesh_volume == pytest.approx(1.0)
     assert mesh.alpha == pytest.approx(90.0)
     assert mesh.min_angle >= mesh.angle_bound
-    assert mesh.stats["leaves"] > 0 and mesh.seconds["mesh"] >= 0
+    assert mesh.stats["refined_input"] and mesh.seconds["mesh"] >= 0
 
 
 def test_segment_markers_kept_on_their_segments():
@@ -85,6 +85,17 @@ def test_size_field_pair_refines_near_its_point():
     assert near.sum() > (~near).sum()
 
 
+def test_default_is_the_refined_cdt_and_quadtree_the_option():
+    domain = pqmesh.read_domain(str(DATA / "2d" / "comb.poly"))
+    default, quad = pqmesh.triangulate(domain), pqmesh.triangulate(domain, quadtree=True)
+    assert_valid(default)
+    assert_valid(quad)
+    assert default.stats["refined_input"] and not quad.stats["refined_input"]
+    assert quad.stats["leaves"] > 0
+    assert default.min_angle >= default.angle_bound and quad.min_angle >= quad.angle_bound
+    assert len(default.triangles) < len(quad.triangles)
+
+
 def test_refine_angle_off_and_on():
     off = pqmesh.triangulate(domain=pqmesh.read_domain(str(DATA / "2d" / "l_shape.poly")), refine_angle=0)
     on = pqmesh.triangulate(domain=pqmesh.read_domain(str(DATA / "2d" / "l_shape.poly")), refine_angle=25)
@@ -104,7 +115,7 @@ def test_no_boundary_steiner_keeps_input_boundary_vertices():
     assert mesh.min_angle <= mesh.upper_bound + 1e-9
     assert mesh.path in ("full", "q-only", "cdt", "cdt-better")
     # The quadtree mesher, by contrast, adds boundary vertices here.
-    quad = pqmesh.triangulate(domain)
+    quad = pqmesh.triangulate(domain, quadtree=True)
     assert_valid(quad)
     assert not pqmesh.check(quad, domain, no_boundary_steiner=True).valid
 

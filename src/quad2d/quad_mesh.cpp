@@ -1,5 +1,7 @@
-// The 2D quadtree mesher's driver: quadtree phases, mesh vertices, then the
-// triangulation of the boxes (docs/algorithm/quad2d.md).
+// The 2D meshers' drivers (docs/algorithm/quad2d.md): quad_mesh (quadtree
+// phases, mesh vertices, then the triangulation of the boxes) and
+// mesh_polygon (the refined CDT of the input, certified against quad_mesh's
+// angle bound, else quad_mesh).
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -7,8 +9,11 @@
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "cdt2d/refine.hpp"
+#include "pqmesh/alpha.hpp"
 #include "pqmesh/errors.hpp"
 #include "pqmesh/quadmesh.hpp"
+#include "pqmesh/quadmesh_bound.hpp"
+#include "pqmesh/quality.hpp"
 #include "quad2d/mesh_points.hpp"
 #include "quad2d/quadtree_builder.hpp"
 #include "quad2d/radix_sort.hpp"
@@ -101,11 +106,13 @@ cdt2d::CdtInput ordered_input(const Domain2& domain, const quad2d::MeshPoints& m
   return in;
 }
 
-// The refinement's options for n points.
-cdt2d::RefineOptions refine_options(const QuadMeshOptions& options, std::size_t n) {
+// The refinement's options for n points: at most max(n, 1000) new points
+// after the quadtree (its points already grade the mesh), or 64 n + 100000
+// from the input alone (mesh_polygon: the refinement does all the grading).
+cdt2d::RefineOptions refine_options(const QuadMeshOptions& options, std::size_t n, bool from_input) {
   cdt2d::RefineOptions ro;
   ro.min_angle_degrees = options.refine_angle_degrees;
-  ro.max_new_points = std::max<std::size_t>(n, 1000);
+  ro.max_new_points = from_input ? 64 * n + 100000 : std::max<std::size_t>(n, 1000);
   return ro;
 }
 
@@ -114,9 +121,9 @@ cdt2d::RefineOptions refine_options(const QuadMeshOptions& options, std::size_t 
 // pass"). Fills the mesh's vertices, triangles and boundary pieces;
 // piece_segment gives each piece's input segment.
 void triangulate(const Domain2& domain, cdt2d::CdtInput in, const std::vector<int>& constraint_segment,
-                 const QuadMeshOptions& options, QuadMeshStats& stats, TriMesh2& mesh,
+                 const cdt2d::RefineOptions& ro, QuadMeshStats& stats, TriMesh2& mesh,
                  std::vector<int>& piece_segment) {
-  if (options.refine_angle_degrees <= 0) {
+  if (ro.min_angle_degrees <= 0) {
     cdt2d::CdtOutput out = cdt2d::constrained_delaunay(in, true);
     mesh.vertices = std::move(in.points);
     mesh.triangles = std::move(out.triangles);
@@ -131,7 +138,6 @@ void triangulate(const Domain2& domain, cdt2d::CdtInput in, const std::vector<in
   for (const auto& seg : domain.pslg.segments)
     support.segment_ends.push_back(
         {domain.pslg.vertices[static_cast<std::size_t>(seg[0])], domain.pslg.vertices[static_cast<std::size_t>(seg[1])]});
-  const cdt2d::RefineOptions ro = refine_options(options, in.points.size());
   cdt2d::RefineResult rr = cdt2d::refine_constrained_delaunay(std::move(in), ro, support);
   stats.refine_points = static_cast<std::int64_t>(rr.inserted);
   stats.refine_target_reached = rr.target_reached;
@@ -165,6 +171,54 @@ void assign_markers(const Domain2& domain, const quad2d::MeshPoints& mp, const s
   if (region_attribute(domain, attribute)) mesh.triangle_markers.assign(mesh.triangles.size(), attribute);
 }
 
+// The mesh of P with the points mp (every point of mp a vertex, each segment
+// the chain of its points): their CDT, refined when asked, with markers.
+void triangulate_points(const Domain2& domain, const quad2d::MeshPoints& mp, const QuadMeshOptions& options,
+                        bool from_input, QuadMeshResult& result) {
+  const auto t0 = Clock::now();
+  std::vector<int> new_id, constraint_segment, piece_segment;
+  const std::size_t n = mp.points.size();
+  const cdt2d::RefineOptions ro = refine_options(options, n, from_input);
+  const std::size_t spare = options.refine_angle_degrees > 0 ? cdt2d::new_point_allowance(n, ro) : 0;
+  cdt2d::CdtInput in = ordered_input(domain, mp, spare, new_id, constraint_segment);
+  triangulate(domain, std::move(in), constraint_segment, ro, result.stats, result.mesh, piece_segment);
+  result.stats.seconds_triangulate = seconds_since(t0);
+  assign_markers(domain, mp, new_id, piece_segment, result.mesh);
+}
+
+// The input alone as MeshPoints: its vertices (sorted by (x, y), as
+// generate_points sorts), each segment the chain of its two ends.
+quad2d::MeshPoints input_points(const Domain2& domain) {
+  const std::vector<Vec2>& v = domain.pslg.vertices;
+  std::vector<int> order(v.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const Vec2 p = v[static_cast<std::size_t>(a)], q = v[static_cast<std::size_t>(b)];
+    return p.x != q.x ? p.x < q.x : p.y < q.y;
+  });
+  quad2d::MeshPoints mp;
+  std::vector<int> point_of(v.size());
+  for (const int i : order) {
+    point_of[static_cast<std::size_t>(i)] = static_cast<int>(mp.points.size());
+    mp.points.push_back(v[static_cast<std::size_t>(i)]);
+    mp.input_vertex.push_back(i);
+  }
+  for (const auto& seg : domain.pslg.segments)
+    mp.segment_chain.push_back({point_of[static_cast<std::size_t>(seg[0])], point_of[static_cast<std::size_t>(seg[1])]});
+  return mp;
+}
+
+// The smallest angle of the mesh in degrees (triangle_quality's measure).
+double smallest_angle_degrees(const TriMesh2& mesh) {
+  double smallest = 180;
+  for (const auto& t : mesh.triangles) {
+    const auto& v = mesh.vertices;
+    smallest = std::min(smallest, triangle_quality(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
+                                                   v[static_cast<std::size_t>(t[2])]).min_angle_deg);
+  }
+  return smallest;
+}
+
 }  // namespace
 
 QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) {
@@ -183,16 +237,25 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
     stats.seconds_points = seconds_since(t0);
   }
 
-  t0 = Clock::now();
-  std::vector<int> new_id, constraint_segment, piece_segment;
-  const std::size_t n = mp.points.size();
-  const std::size_t spare =
-      options.refine_angle_degrees > 0 ? cdt2d::new_point_allowance(n, refine_options(options, n)) : 0;
-  cdt2d::CdtInput in = ordered_input(domain, mp, spare, new_id, constraint_segment);
-  triangulate(domain, std::move(in), constraint_segment, options, stats, result.mesh, piece_segment);
-  stats.seconds_triangulate = seconds_since(t0);
-  assign_markers(domain, mp, new_id, piece_segment, result.mesh);
+  triangulate_points(domain, mp, options, false, result);
   return result;
+}
+
+QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& options) {
+  const bool sized = options.max_size > 0 || !options.size_field.points.empty();
+  if (options.quadtree || sized || options.protect_edges || options.refine_angle_degrees <= 0)
+    return quad_mesh(domain, options);
+  QuadMeshResult refined;
+  triangulate_points(domain, input_points(domain), options, true, refined);
+  refined.stats.refined_input = true;
+  refined.stats.refined_input_min_angle = smallest_angle_degrees(refined.mesh);
+  const double alpha = compute_alpha(domain.pslg.vertices, domain.loops).degrees();
+  if (refined.stats.refined_input_min_angle >= quad_mesh_angle_bound(alpha, options.refine_angle_degrees))
+    return refined;
+  QuadMeshResult fallback = quad_mesh(domain, options);
+  fallback.stats.refined_input_min_angle = refined.stats.refined_input_min_angle;
+  fallback.stats.refined_input_triangles = static_cast<std::int64_t>(refined.mesh.triangles.size());
+  return fallback;
 }
 
 }  // namespace pqmesh
