@@ -55,25 +55,12 @@ TEST(MeshPolygonProperty, RandomPolygonsCertifiedAndNoLargerThanTheQuadtreeMesh)
   EXPECT_GT(tally.refined_input, 0);
 }
 
-// The hard generator settings of quad_mesh_property_test: many holes with gaps
-// down to 1e-5, spikes down to 0.5 degrees, vertices snapped to a coarse grid.
+// The hard generator settings (test::hard_polygon_options), seeds 1 to 30 each.
 TEST(MeshPolygonProperty, HardGeneratorSettingsCertified) {
-  test::PolygonOptions holes;
-  holes.max_holes = 12;
-  holes.max_vertices = 60;
-  holes.near_touch_probability = 0.8;
-  holes.min_gap = 1e-5;
-  test::PolygonOptions spikes;
-  spikes.spike_probability = 0.9;
-  spikes.min_spike_degrees = 0.5;
-  spikes.snap_probability = 0.6;
-  test::PolygonOptions coarse;
-  coarse.grid_bits = 8;
-  coarse.snap_probability = 0.9;
   Tally tally;
-  for (const test::PolygonOptions* o : {&holes, &spikes, &coarse})
+  for (const test::PolygonOptions& o : test::hard_polygon_options())
     for (std::uint64_t seed = 1; seed <= 30; ++seed)
-      expect_certified(make_domain(test::random_polygon_with_holes(seed, *o)), test::describe_polygon(seed), tally);
+      expect_certified(make_domain(test::random_polygon_with_holes(seed, o)), test::describe_polygon(seed, o), tally);
   std::cout << "90 polygons: " << tally.refined_input << " meshed by the refined CDT of the input; "
             << tally.triangles << " triangles against the quadtree's " << tally.quadtree_triangles << "\n";
 }

@@ -60,28 +60,17 @@ TEST(QuadMeshProperty, RandomPolygonsAreValidAndWellShaped) {
 // seeds include one (1130, many holes) whose warped corner near the origin
 // needed many ulp steps to be rounded onto its segment.
 TEST(QuadMeshProperty, HardGeneratorSettingsAreValid) {
-  test::PolygonOptions holes;
-  holes.max_holes = 12;
-  holes.max_vertices = 60;
-  holes.near_touch_probability = 0.8;
-  holes.min_gap = 1e-5;
-  test::PolygonOptions spikes;
-  spikes.spike_probability = 0.9;
-  spikes.min_spike_degrees = 0.5;
-  spikes.snap_probability = 0.6;
-  test::PolygonOptions coarse;
-  coarse.grid_bits = 8;
-  coarse.snap_probability = 0.9;
+  const auto settings = test::hard_polygon_options();
   int meshed = 0;
-  for (const test::PolygonOptions* o : {&holes, &spikes, &coarse}) {
+  for (const test::PolygonOptions& o : settings) {
     std::vector<std::uint64_t> seeds;
     for (std::uint64_t seed = 1; seed <= 30; ++seed) seeds.push_back(seed);
-    if (o == &holes) seeds.push_back(1130);
+    if (&o == &settings[0]) seeds.push_back(1130);
     for (const std::uint64_t seed : seeds) {
-      const Domain2 d = make_domain(test::random_polygon_with_holes(seed, *o));
+      const Domain2 d = make_domain(test::random_polygon_with_holes(seed, o));
       const QuadMeshResult r = quad_mesh(d);
       const CheckReport check = check_mesh(r.mesh, d);
-      ASSERT_TRUE(check.valid()) << test::describe_polygon(seed, *o) << "\n" << check.to_text();
+      ASSERT_TRUE(check.valid()) << test::describe_polygon(seed, o) << "\n" << check.to_text();
       ++meshed;
     }
   }

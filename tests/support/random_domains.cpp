@@ -810,4 +810,20 @@ double smallest_corner_angle(const std::vector<std::vector<Vec2>>& loops) {
   return best;
 }
 
+std::array<PolygonOptions, 3> hard_polygon_options() {
+  PolygonOptions holes;
+  holes.max_holes = 12;
+  holes.max_vertices = 60;
+  holes.near_touch_probability = 0.8;
+  holes.min_gap = 1e-5;
+  PolygonOptions spikes;
+  spikes.spike_probability = 0.9;
+  spikes.min_spike_degrees = 0.5;
+  spikes.snap_probability = 0.6;
+  PolygonOptions coarse;
+  coarse.grid_bits = 8;
+  coarse.snap_probability = 0.9;
+  return {holes, spikes, coarse};
+}
+
 }  // namespace pqmesh::test

@@ -16,6 +16,7 @@
 // generator: a candidate that fails is rejected and redrawn from the same
 // random stream, so the result is still deterministic. The property tests run
 // make_domain on every output as an independent check.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -83,6 +84,12 @@ PolygonWithHoles random_polygon_loops(std::uint64_t seed, const PolygonOptions& 
 // and one hole point per hole.
 Pslg2 to_pslg(const PolygonWithHoles& polygon, std::uint64_t seed, bool shuffle_ids);
 Pslg2 random_polygon_with_holes(std::uint64_t seed, const PolygonOptions& options = {});
+
+// The harder generator settings of the 2D property tests, in this order: many
+// holes (up to 12, 60 outer vertices) with gaps down to 1e-5 of the part;
+// spikes down to 0.5 degrees with vertices often snapped; vertices snapped to
+// a coarse dyadic grid (2^-8), so edges pass through box corners and sides.
+std::array<PolygonOptions, 3> hard_polygon_options();
 
 struct PolyhedronOptions {
   PolygonOptions polygon{};           // the extruded cross-section
