@@ -170,7 +170,10 @@ def check_corpus(pqmesh, read_exe, data, tmp):
             with open(zlib_file, "rb") as f:
                 check(b'compressor="vtkZLibDataCompressor"' in f.read(2000), f"{zlib_file} is not compressed")
             check_written(rel + " --compress", zlib_file, dim, read_exe, reference)
-            check(os.path.getsize(zlib_file) < os.path.getsize(raw), f"{rel}: --compress did not shrink the file")
+            # Below a few KiB the zlib headers can outweigh what compression
+            # saves (a 2-triangle square: 1079 bytes raw, 1241 compressed).
+            if os.path.getsize(raw) >= 4096:
+                check(os.path.getsize(zlib_file) < os.path.getsize(raw), f"{rel}: --compress did not shrink the file")
         if run([pqmesh, "convert", raw, ascii_file, "--ascii"]) is not None and reference is not None:
             # pqmesh reads an all-zero marker array as "no markers", so convert does not write it.
             converted = dict(reference, cell_data=dict(reference["cell_data"]))
