@@ -4,7 +4,9 @@
 #   --bench   also the peers the benchmarks compare against (tetgen, CGAL, and
 #             Triangle when the machine's apt sources have Debian's non-free
 #             section, where triangle-bin lives; without it the benchmark prints
-#             "missing" for Triangle)
+#             "missing" for Triangle), and the real CAD and scanned surfaces of
+#             bench/real_parts.sh (libcgal-demo: CGAL's example OFF files;
+#             occt-misc: Open CASCADE's sample STL files), optional as well
 set -euo pipefail
 
 # The library, its tests and the file-format clients (meshio, gmsh, VTK below).
@@ -14,7 +16,7 @@ packages+=(pybind11-dev python3-dev python3-pytest python3-vtk9)
 optional=()
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(tetgen libcgal-dev time)
-  optional+=(triangle-bin)
+  optional+=(triangle-bin libcgal-demo occt-misc)
 fi
 
 missing=()

@@ -180,7 +180,8 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
                                                  "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
-                                                 "--aligned-grid", "--compress", "--lfs-integral", "--quadtree"};
+                                                 "--aligned-grid", "--full-separation", "--compress", "--lfs-integral",
+                                                 "--quadtree"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
                                                    "--refine-angle"};
 

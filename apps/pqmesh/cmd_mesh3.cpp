@@ -98,6 +98,21 @@ void print_lfs_integral_line(const Mesh3Run& run) {
             << (sized ? " (I3 ignores the sizing)" : "") << '\n';
 }
 
+// Which octree made the mesh (TetSeparation) and, when the light one was
+// dropped, why and what it cost.
+void print_octree_line(const TetMeshStats& s) {
+  std::cout << "octree     ";
+  if (!s.separated) {
+    std::cout << "light (no separating splits, thesis 4.1.7 steps 6 and 9)\n";
+    return;
+  }
+  std::cout << "separated (thesis 4.1.7 steps 6 and 9)";
+  if (!s.light_rejected.empty())
+    std::cout << "; the light octree's mesh was dropped after " << fmt_seconds(s.seconds_light)
+              << " s: " << s.light_rejected;
+  std::cout << '\n';
+}
+
 void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector<CellField>& fields) {
   const TetMesh3& mesh = run.result.mesh;
   const TetMeshStats& s = run.result.stats;
@@ -129,8 +144,9 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << (run.options.generic_grid ? "generic, planes shifted by " +
                                                fmt(Vec3{s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]})
                                          : std::string("aligned"))
-            << "; root side " << fmt(s.root_size) << ", depth " << s.depth << '\n'
-            << "leaves     " << s.leaves << ":";
+            << "; root side " << fmt(s.root_size) << ", depth " << s.depth << '\n';
+  print_octree_line(s);
+  std::cout << "leaves     " << s.leaves << ":";
   for (int k = 0; k < kTetLeafKinds; ++k)
     std::cout << (k ? ", " : " ") << tet_leaf_kind_name(k) << ' ' << s.leaves_per_kind[static_cast<std::size_t>(k)];
   std::cout << '\n'
@@ -177,6 +193,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
       throw UsageError("--max-size must be a positive number, got '" + *args.option("--max-size") + "'");
   }
   run.options.generic_grid = !args.flag("--aligned-grid");
+  if (args.flag("--full-separation")) run.options.separation = TetSeparation::Always;
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);
   run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work
   const bool compress = compress_option(args, run.format);

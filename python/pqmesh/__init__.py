@@ -102,7 +102,8 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
 
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,
-                   domain=None, max_size=None, size_field=None, aligned_grid=False, warp=True):
+                   domain=None, max_size=None, size_field=None, aligned_grid=False, warp=True,
+                   full_separation=False):
     """Mesh a polyhedral domain (`pqmesh mesh` on a 3D input); returns a TetMesh.
 
     points (N, 3); facets: a list of polygons, each a list of vertex ids (or a list
@@ -116,6 +117,8 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
                   min over i of sizes[i] + |x - points[i]|
     aligned_grid  octree planes on the bounding box's dyadic grid (--aligned-grid)
     warp          the warping of thesis 4.3 (on in the CLI)
+    full_separation  the thesis's octree with the separating splits at once, never the lighter
+                  octree first (--full-separation; stats["separated"] says which one made the mesh)
 
     The result's attributes: domain, alpha (degrees), max_aspect_ratio,
     aspect_bound (the measured bound C / alpha), min_dihedral, max_dihedral
@@ -123,7 +126,7 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
     """
     domain = _domain(Domain3, domain, points, facets, facet_markers, holes, regions)
     return _pqmesh.tet_mesh(domain, _positive("max_size", max_size), size_field,
-                            not aligned_grid, bool(warp))
+                            not aligned_grid, bool(warp), bool(full_separation))
 
 
 def check(mesh, domain, *, no_boundary_steiner=False, max_issues=20, locate_vertices=True):

@@ -37,13 +37,15 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("warped") = s.warped, py::arg("warp_rebuilds") = s.warp_rebuilds,
                   py::arg("worst_box_rounds") = s.worst_box_rounds, py::arg("split_squares") = s.split_squares,
                   py::arg("warp_failure") = s.warp_failure, py::arg("boundary_faces") = s.boundary_faces,
+                  py::arg("separated") = s.separated, py::arg("light_rejected") = s.light_rejected,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
 }
 
 py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,
-                        bool warp) {
+                        bool warp, bool full_separation) {
   TetMeshOptions options;
+  if (full_separation) options.separation = TetSeparation::Always;
   options.max_size = max_size;
   options.generic_grid = generic_grid;
   options.warp = warp;
@@ -71,7 +73,7 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
   mesh.attr("stats") = stats_dict(s);
   mesh.attr("seconds") = py::dict(py::arg("octree") = s.seconds_octree, py::arg("classify") = s.seconds_classify,
                                   py::arg("tetrahedra") = s.seconds_tetrahedra, py::arg("boundary") = s.seconds_boundary,
-                                  py::arg("mesh") = seconds);
+                                  py::arg("light") = s.seconds_light, py::arg("mesh") = seconds);
   return mesh;
 }
 
@@ -79,7 +81,8 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
 
 void bind_mesh3d(py::module_& m) {
   m.def("tet_mesh", &run_tet_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
-        py::arg("generic_grid"), py::arg("warp"), "tet_mesh(domain, options); see pqmesh.tetrahedralize.");
+        py::arg("generic_grid"), py::arg("warp"), py::arg("full_separation"),
+        "tet_mesh(domain, options); see pqmesh.tetrahedralize.");
 }
 
 }  // namespace pqmesh::python

@@ -10,7 +10,10 @@
 #include "mesh3d/boundary_faces.hpp"
 #include "mesh3d/box_plan.hpp"
 #include "mv3d/octree_builder.hpp"
+#include "pqmesh/alpha.hpp"
+#include "pqmesh/check.hpp"
 #include "pqmesh/tetmesh.hpp"
+#include "quality/tetrahedron_quality_memo.hpp"
 #include "tet3d/box_faces.hpp"
 #include "tet3d/facet_boxes.hpp"
 
@@ -47,8 +50,11 @@ const char* tet_leaf_kind_name(int kind) {
 MeshNotSupported::MeshNotSupported(std::int64_t leaf, std::string kind, const std::string& detail)
     : InvalidInput(ErrorCode::Unsupported, detail, {leaf}), kind_(std::move(kind)) {}
 
-TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
-  const auto t0 = Clock::now();
+namespace {
+
+// One construction: octree (with or without the separating splits), box
+// plan, box tetrahedra, boundary triangles. Throws as tet_mesh does.
+TetMeshResult construct(const Domain3& domain, const TetMeshOptions& options, bool separate, Clock::time_point t0) {
   TetMeshResult out;
   TetMeshStats& s = out.stats;
   TetMeshProgress progress;
@@ -66,7 +72,8 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   oo.size_field.sizes = options.size_field.sizes;
   oo.size_field.lines = options.size_field.lines;
   oo.size_field.path = options.size_field.path;
-  oo.separate = true;
+  oo.separate = separate;
+  s.separated = separate;
   oo.generic_grid = options.generic_grid;
   auto t = Clock::now();
   mv3d::OctreeBuilder builder(domain, std::move(oo));
@@ -134,8 +141,64 @@ TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   s.boundary_faces = static_cast<std::int64_t>(out.mesh.faces.size());
   out.mesh.tetrahedron_markers.assign(out.mesh.tetrahedra.size(), region_attribute(domain));
   s.seconds_boundary = since(t);
-  report("done");
   return out;
+}
+
+// Largest aspect ratio over the mesh (the memo: the octree's tetrahedra are a
+// few thousand shapes repeated).
+double max_aspect(const TetMesh3& mesh) {
+  TetrahedronQualityMemo memo;
+  double worst = 0;
+  for (const auto& t : mesh.tetrahedra) {
+    const auto& v = mesh.vertices;
+    const double a = memo(v[t[0]], v[t[1]], v[t[2]], v[t[3]]).aspect_ratio;
+    if (!(a <= worst)) worst = a;  // NaN counts as worst
+  }
+  return worst;
+}
+
+// Why the light construction's mesh is not kept (TetSeparation::Adaptive);
+// empty when it is: valid (the checker of pqmesh/check.hpp) and within the
+// aspect bound.
+std::string light_rejection(const Domain3& domain, TetMeshResult& light) {
+  const CheckReport check = check_mesh(light.mesh, domain);
+  if (!check.valid()) return "the checker: " + check.to_text().substr(0, check.to_text().find('\n'));
+  const double alpha = compute_alpha(domain.plc).radians;
+  light.stats.max_aspect = max_aspect(light.mesh);
+  if (light.stats.max_aspect * alpha <= kMeasuredAspectAlphaC) return {};
+  return "max aspect ratio " + std::to_string(light.stats.max_aspect) + " above C / alpha = " +
+         std::to_string(kMeasuredAspectAlphaC / alpha);
+}
+
+}  // namespace
+
+TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
+  const auto t0 = Clock::now();
+  auto finish = [&](TetMeshResult& r) {
+    const TetMeshStats& s = r.stats;
+    const std::int64_t jobs = s.empty_jobs + s.facet_jobs + s.edge_jobs + s.vertex_jobs + s.two_facet_jobs;
+    const auto tetrahedra = static_cast<std::int64_t>(r.mesh.tetrahedra.size());
+    if (options.progress) options.progress(TetMeshProgress{"done", s.leaves, jobs, tetrahedra, since(t0)});
+    return std::move(r);
+  };
+  std::string rejected;
+  if (options.separation == TetSeparation::Adaptive) {
+    try {
+      TetMeshResult light = construct(domain, options, false, t0);
+      rejected = light_rejection(domain, light);
+      if (rejected.empty()) return finish(light);
+    } catch (const MeshNotSupported& e) {
+      rejected = e.what();
+    } catch (const InternalError& e) {
+      rejected = e.what();
+    }
+  }
+  const double light_seconds = since(t0);
+  TetMeshResult full = construct(domain, options, true, t0);
+  full.stats.light_rejected = rejected;
+  full.stats.seconds_light = options.separation == TetSeparation::Adaptive ? light_seconds : 0;
+  full.stats.max_aspect = max_aspect(full.mesh);
+  return finish(full);
 }
 
 }  // namespace pqmesh

@@ -126,6 +126,7 @@ struct SeedRecord {
   double aspect = 0;           // max over the tetrahedra
   bool warp_fallback = false;  // TetMeshStats::warp_failure non-empty: the unwarped mesh was returned
   std::int64_t worst_box_rounds = 0;  // TetMeshStats::worst_box_rounds (printed when not 0)
+  bool separated = false;      // TetMeshStats::separated: the thesis's octree made the mesh
   double cpu_seconds = 0;
   double aspect_alpha() const { return aspect * alpha; }
 };
@@ -157,6 +158,7 @@ SeedRecord mesh_seed(std::uint64_t seed, const PolyhedronOptions& options) {
     r.tets = static_cast<std::int64_t>(m.mesh.tetrahedra.size());
     r.warp_fallback = !m.stats.warp_failure.empty();
     r.worst_box_rounds = m.stats.worst_box_rounds;
+    r.separated = m.stats.separated;
     const CheckReport c = check_mesh(m.mesh, d);
     if (c.valid()) {
       r.status = SeedRecord::Status::Valid;
@@ -190,16 +192,17 @@ void print_record(const SeedRecord& r) {
   const std::string rounds =
       r.worst_box_rounds > 0 ? ", " + std::to_string(r.worst_box_rounds) + " worst-box rounds" : "";
   if (r.status == SeedRecord::Status::Valid)
-    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f%s%s, %.2f s cpu\n",
+    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f, %s octree%s%s, %.2f s cpu\n",
                 static_cast<unsigned long long>(r.seed), static_cast<long long>(r.tets), deg, r.aspect,
-                r.aspect_alpha(), r.warp_fallback ? ", WARP FALLBACK" : "", rounds.c_str(), r.cpu_seconds);
+                r.aspect_alpha(), r.separated ? "separated" : "light", r.warp_fallback ? ", WARP FALLBACK" : "",
+                rounds.c_str(), r.cpu_seconds);
   else
     std::printf("seed %3llu: FAILED (%s), alpha %.2f deg, %.2f s cpu: %s\n", static_cast<unsigned long long>(r.seed),
                 r.failure.c_str(), deg, r.cpu_seconds, first_line(r.detail).c_str());
 }
 
 void print_summary(const char* title, const std::vector<SeedRecord>& records) {
-  int valid = 0, invalid = 0, threw = 0, fallback = 0;
+  int valid = 0, invalid = 0, threw = 0, fallback = 0, separated = 0;
   std::map<std::string, std::vector<std::uint64_t>> by_class;
   std::vector<double> products;
   std::vector<std::int64_t> tets;
@@ -216,13 +219,14 @@ void print_summary(const char* title, const std::vector<SeedRecord>& records) {
     }
     ++valid;
     fallback += r.warp_fallback;
+    separated += r.separated;
     products.push_back(r.aspect_alpha());
     tets.push_back(r.tets);
     if (!worst || r.aspect_alpha() > worst->aspect_alpha()) worst = &r;
   }
-  std::printf("=== %s: %zu seeds, %d meshed valid (%d with the unwarped fallback), %d invalid, %d threw; "
-              "%.1f s cpu",
-              title, records.size(), valid, fallback, invalid, threw, cpu);
+  std::printf("=== %s: %zu seeds, %d meshed valid (%d on the separated octree, %d with the unwarped fallback), "
+              "%d invalid, %d threw; %.1f s cpu",
+              title, records.size(), valid, separated, fallback, invalid, threw, cpu);
   if (slowest) std::printf(" (slowest seed %llu: %.1f s)", static_cast<unsigned long long>(slowest->seed), slowest->cpu_seconds);
   std::printf("\n");
   for (const auto& [cls, seeds] : by_class) {

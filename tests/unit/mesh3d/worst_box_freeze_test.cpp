@@ -44,10 +44,13 @@ TEST(WorstBoxFreeze, BringsFlatSeed100WithinTheConstant) {
   EXPECT_GT(after.warp_inverting_left, before.warp_inverting_left);
 }
 
-// Through tet_mesh, with the boundary and its markers: flat seed 49.
+// Through tet_mesh, with the boundary and its markers: flat seed 49 on the
+// thesis's octree (TetSeparation::Always).
 TEST(WorstBoxFreeze, TetMeshReportsTheRoundsOnFlatSeed49) {
   const Domain3 d = test::every_run_seed_as_triangles(49);
-  const TetMeshResult r = tet_mesh(d);
+  TetMeshOptions thesis_octree;
+  thesis_octree.separation = TetSeparation::Always;
+  const TetMeshResult r = tet_mesh(d, thesis_octree);
   EXPECT_TRUE(r.stats.warp_failure.empty()) << r.stats.warp_failure;
   EXPECT_GE(r.stats.worst_box_rounds, 1);
   const CheckReport report = check_mesh(r.mesh, d);
