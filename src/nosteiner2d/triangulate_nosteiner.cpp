@@ -87,22 +87,19 @@ bool passes(const TriMesh2& mesh, const Domain2& domain, std::string& why) {
   return false;
 }
 
-}  // namespace
-
-NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, const NoSteinerOptions& options) {
-  const auto start = Clock::now();
-  NoSteinerResult out;
-  NoSteinerStats& st = out.stats;
-  auto t = Clock::now();
+// Records the thesis's Steiner-free bound g (reported) and its time.
+void record_bound(const Domain2& domain, NoSteinerStats& st) {
+  const auto t = Clock::now();
   const SteinerFreeBound bound = steiner_free_bound(domain);  // the thesis's definition, reported
   st.g = bound.g;
   st.upper_bound = bound.upper_bound();
   st.seconds_bound = since(t);
+}
 
-  // Each stage either succeeds or records why the next fallback is taken.
-  std::string reason;
+// The polygon Q, or nothing with the reason in `reason`.
+std::optional<PolygonQ> build_q(const Domain2& domain, NoSteinerStats& st, std::string& reason) {
   std::optional<PolygonQ> q;
-  t = Clock::now();
+  const auto t = Clock::now();
   try {
     // Q needs interference through the far end (SteinerFreeOptions;
     // docs/algorithm/nosteiner2d.md "Welding and the polygon Q").
@@ -115,138 +112,171 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
     reason = std::string("Q failed: ") + ex.what();
   }
   st.seconds_q = since(t);
+  return q;
+}
 
-  TriMesh2 mesh;
-  st.path = NoSteinerPath::Cdt;
-  if (q) {
-    st.q_vertices = 0;
-    for (const auto& loop : q->loops) st.q_vertices += std::int64_t(loop.size());
-    bool full = false;
-    t = Clock::now();
-    std::optional<QuadMeshResult> r_mesh;
-    PolygonR r;
-    try {
-      r = shrink_q_to_r(q_loop_points(*q));
-      if (!r.valid)
-        reason = "R invalid: " + r.failure;
-      else if (!r.representable)
-        reason = "R below double resolution (docs/algorithm/nosteiner2d.md \"Delta and the shrink to R\")";
-      else
-        r_mesh = quad_mesh(polygon_r_domain(r), options.r_mesh);
-    } catch (const std::exception& ex) {
-      reason = std::string("R failed: ") + ex.what();
+// The polygon R shrunk from Q (into r) and its quad mesh, or nothing with the
+// reason in `reason`.
+std::optional<QuadMeshResult> build_r_mesh(const PolygonQ& q, const NoSteinerOptions& options, PolygonR& r,
+                                           NoSteinerStats& st, std::string& reason) {
+  const auto t = Clock::now();
+  std::optional<QuadMeshResult> r_mesh;
+  try {
+    r = shrink_q_to_r(q_loop_points(q));
+    if (!r.valid)
+      reason = "R invalid: " + r.failure;
+    else if (!r.representable)
+      reason = "R below double resolution (docs/algorithm/nosteiner2d.md \"Delta and the shrink to R\")";
+    else
+      r_mesh = quad_mesh(polygon_r_domain(r), options.r_mesh);
+  } catch (const std::exception& ex) {
+    reason = std::string("R failed: ") + ex.what();
+  }
+  st.seconds_r = since(t);
+  return r_mesh;
+}
+
+// The full mesh into `mesh`: Q^c, R's mesh, and the Q-to-R triangles between
+// them. False (reason in `reason`) when the matching throws.
+bool assemble_full(const PolygonQ& q, const PolygonR& r, const QuadMeshResult& r_mesh, const NoSteinerOptions& options,
+                   TriMesh2& mesh, NoSteinerStats& st, std::string& reason) {
+  bool full = false;
+  const auto t = Clock::now();
+  try {
+    mesh.vertices = q.wedges.vertices;
+    add(mesh, q.wedges.triangles, kRegionWedges);
+    const int offset = int(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), r_mesh.mesh.vertices.begin(), r_mesh.mesh.vertices.end());
+    add(mesh, r_mesh.mesh.triangles, kRegionR, offset);
+    // §5.4: match trapezoids and triangles with square drawing (match_qr.hpp).
+    detail::MatchOptions match;
+    if (options.thesis_fans) {  // the thesis's construction as it is (no swap for the plain CDT)
+      match.connectivity = detail::MatchOptions::Connectivity::Fans;
+      match.keep_better = false;
     }
-    st.seconds_r = since(t);
-    if (r_mesh) {
-      t = Clock::now();
-      try {
-        mesh.vertices = q->wedges.vertices;
-        add(mesh, q->wedges.triangles, kRegionWedges);
-        const int offset = int(mesh.vertices.size());
-        mesh.vertices.insert(mesh.vertices.end(), r_mesh->mesh.vertices.begin(), r_mesh->mesh.vertices.end());
-        add(mesh, r_mesh->mesh.triangles, kRegionR, offset);
-        // §5.4: match trapezoids and triangles with square drawing (match_qr.hpp).
-        detail::MatchOptions match;
-        if (options.thesis_fans) {  // the thesis's construction as it is (no swap for the plain CDT)
-          match.connectivity = detail::MatchOptions::Connectivity::Fans;
-          match.keep_better = false;
-        }
-        const auto between = detail::match_q_to_r(*q, r, r_mesh->mesh, match);
-        mesh.vertices.insert(mesh.vertices.end(), between.points.begin(), between.points.end());
-        add(mesh, between.triangles, kRegionBetween);
-        // Vertices on dR: R's mesh vertices on a Q-to-R triangle.
-        std::vector<char> on_dr(r_mesh->mesh.vertices.size(), 0);
-        for (const auto& tri : between.triangles)
-          for (int v : tri)
-            if (v >= offset && v < offset + int(on_dr.size())) on_dr[std::size_t(v - offset)] = 1;
-        for (char c : on_dr) st.r_vertices += c;
-        full = true;
-      } catch (const std::exception& ex) {
-        reason = std::string("Q to R failed: ") + ex.what();
-      }
-      st.seconds_between = since(t);
-    }
-    if (full && options.verify) {
-      t = Clock::now();
+    const auto between = detail::match_q_to_r(q, r, r_mesh.mesh, match);
+    mesh.vertices.insert(mesh.vertices.end(), between.points.begin(), between.points.end());
+    add(mesh, between.triangles, kRegionBetween);
+    // Vertices on dR: R's mesh vertices on a Q-to-R triangle.
+    std::vector<char> on_dr(r_mesh.mesh.vertices.size(), 0);
+    for (const auto& tri : between.triangles)
+      for (int v : tri)
+        if (v >= offset && v < offset + int(on_dr.size())) on_dr[std::size_t(v - offset)] = 1;
+    for (char c : on_dr) st.r_vertices += c;
+    full = true;
+  } catch (const std::exception& ex) {
+    reason = std::string("Q to R failed: ") + ex.what();
+  }
+  st.seconds_between = since(t);
+  return full;
+}
+
+// The full mesh still passes the checker (options.verify)? Else the reason.
+bool full_mesh_passes(const TriMesh2& mesh, const Domain2& domain, NoSteinerStats& st, std::string& reason) {
+  bool full = true;
+  const auto t = Clock::now();
+  std::string why;
+  if (!passes(mesh, domain, why)) {
+    full = false;
+    reason = "full mesh failed the check: " + why;
+  }
+  st.seconds_verify += since(t);
+  return full;
+}
+
+// The QOnly fallback: Q^c + the CDT of Q into `mesh`, st.path QOnly unless it
+// throws or (options.verify) fails the checker, when st.path stays or becomes Cdt.
+void q_only_fallback(const PolygonQ& q, const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh,
+                     NoSteinerStats& st, std::string& reason) {
+  try {
+    mesh = q_only(q);
+    st.path = NoSteinerPath::QOnly;
+    if (options.verify) {
+      const auto t = Clock::now();
       std::string why;
       if (!passes(mesh, domain, why)) {
-        full = false;
-        reason = "full mesh failed the check: " + why;
+        st.path = NoSteinerPath::Cdt;
+        reason += "; Q-only mesh failed the check: " + why;
       }
       st.seconds_verify += since(t);
     }
-    if (full) {
-      st.path = NoSteinerPath::Full;
-    } else {
-      try {
-        mesh = q_only(*q);
-        st.path = NoSteinerPath::QOnly;
-        if (options.verify) {
-          t = Clock::now();
-          std::string why;
-          if (!passes(mesh, domain, why)) {
-            st.path = NoSteinerPath::Cdt;
-            reason += "; Q-only mesh failed the check: " + why;
-          }
-          st.seconds_verify += since(t);
-        }
-      } catch (const std::exception& ex) {
-        reason += std::string("; CDT of Q failed: ") + ex.what();
-      }
-    }
+  } catch (const std::exception& ex) {
+    reason += std::string("; CDT of Q failed: ") + ex.what();
   }
-  if (st.path == NoSteinerPath::Cdt) mesh = p_cdt(domain);
-  st.construction_min_angle = min_triangle_angle(mesh);
-  st.construction_triangles = std::int64_t(mesh.triangles.size());
-  if (options.quality_pass && st.path != NoSteinerPath::Cdt) {
-    t = Clock::now();
-    TriMesh2 before = mesh;
-    const detail::QualityPassStats pass =
-        detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
-    st.pass_flips = pass.flips;
-    st.pass_removals = pass.removals;
-    st.pass_moves = pass.moves;
-    st.pass_cavities = pass.cavities + pass.large_cavities;
-    st.pass_removals += pass.coarsened;
-    st.pass_stuck = pass.stopped_stuck;
-    st.seconds_pass = since(t);
-    if (options.verify) {  // valid by construction (quality_pass.hpp); checked like every stage
-      t = Clock::now();
-      std::string why;
-      if (!passes(mesh, domain, why)) {
-        mesh = std::move(before);
-        reason += (reason.empty() ? "" : "; ") + std::string("quality pass output failed the check: ") + why;
-      }
-      st.seconds_verify += since(t);
-    }
-  }
-  st.fallback_reason = st.path == NoSteinerPath::Full ? std::string() : reason;
-  st.pipeline_path = st.path;
-  st.pipeline_min_angle = min_triangle_angle(mesh);
-  st.pipeline_triangles = std::int64_t(mesh.triangles.size());
-  st.pipeline_vertices = std::int64_t(mesh.vertices.size());
-  if (options.compare_cdt) {
-    t = Clock::now();
-    TriMesh2 cdt = p_cdt(domain);
-    st.cdt_min_angle = min_triangle_angle(cdt);
-    st.seconds_cdt = since(t);
-    if (options.keep_better_cdt && st.path != NoSteinerPath::Cdt && st.cdt_min_angle > st.pipeline_min_angle) {
-      st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") + "the CDT of P has the larger min angle (" + std::to_string(st.cdt_min_angle) +
-                           " rad against " + std::to_string(st.pipeline_min_angle) + " rad from " +
-                           to_string(st.path) + ")";
-      st.path = NoSteinerPath::CdtBetter;
-      mesh = std::move(cdt);
-    }
-  }
+}
 
-  // The input segments as the boundary edges (no Steiner point: one mesh edge each).
+// Given Q: the full mesh (st.path Full) or the QOnly fallback (st.path QOnly,
+// or Cdt when that fails too).
+void mesh_from_q(const PolygonQ& q, const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh,
+                 NoSteinerStats& st, std::string& reason) {
+  st.q_vertices = 0;
+  for (const auto& loop : q.loops) st.q_vertices += std::int64_t(loop.size());
+  bool full = false;
+  PolygonR r;
+  const std::optional<QuadMeshResult> r_mesh = build_r_mesh(q, options, r, st, reason);
+  if (r_mesh) full = assemble_full(q, r, *r_mesh, options, mesh, st, reason);
+  if (full && options.verify) full = full_mesh_passes(mesh, domain, st, reason);
+  if (full) {
+    st.path = NoSteinerPath::Full;
+  } else {
+    q_only_fallback(q, domain, options, mesh, st, reason);
+  }
+}
+
+// The quality pass (quality_pass.hpp) on `mesh`; with options.verify, the
+// mesh before the pass is kept when the output fails the checker.
+void run_quality_pass(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, NoSteinerStats& st,
+                      std::string& reason) {
+  auto t = Clock::now();
+  TriMesh2 before = mesh;
+  const detail::QualityPassStats pass =
+      detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
+  st.pass_flips = pass.flips;
+  st.pass_removals = pass.removals;
+  st.pass_moves = pass.moves;
+  st.pass_cavities = pass.cavities + pass.large_cavities;
+  st.pass_removals += pass.coarsened;
+  st.pass_stuck = pass.stopped_stuck;
+  st.seconds_pass = since(t);
+  if (options.verify) {  // valid by construction (quality_pass.hpp); checked like every stage
+    t = Clock::now();
+    std::string why;
+    if (!passes(mesh, domain, why)) {
+      mesh = std::move(before);
+      reason += (reason.empty() ? "" : "; ") + std::string("quality pass output failed the check: ") + why;
+    }
+    st.seconds_verify += since(t);
+  }
+}
+
+// Records the CDT of P's min angle; with options.keep_better_cdt it replaces
+// `mesh` (st.path CdtBetter) when its min angle is larger.
+void compare_with_cdt(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, NoSteinerStats& st) {
+  const auto t = Clock::now();
+  TriMesh2 cdt = p_cdt(domain);
+  st.cdt_min_angle = min_triangle_angle(cdt);
+  st.seconds_cdt = since(t);
+  if (options.keep_better_cdt && st.path != NoSteinerPath::Cdt && st.cdt_min_angle > st.pipeline_min_angle) {
+    st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") + "the CDT of P has the larger min angle (" + std::to_string(st.cdt_min_angle) +
+                         " rad against " + std::to_string(st.pipeline_min_angle) + " rad from " +
+                         to_string(st.path) + ")";
+    st.path = NoSteinerPath::CdtBetter;
+    mesh = std::move(cdt);
+  }
+}
+
+// The input segments as the boundary edges (no Steiner point: one mesh edge each).
+void add_boundary_edges(const Domain2& domain, TriMesh2& mesh) {
   for (std::size_t l = 0; l < domain.loops.size(); ++l)
     for (std::size_t k = 0; k < domain.loops[l].size(); ++k) {
       mesh.edges.push_back({domain.loops[l][k], domain.loops[l][(k + 1) % domain.loops[l].size()]});
       if (!domain.pslg.segment_markers.empty())
         mesh.edge_markers.push_back(domain.pslg.segment_markers[std::size_t(domain.loop_segments[l][k])]);
     }
+}
 
+// The statistics of the final mesh: sizes, min angles overall and per region.
+void record_final_stats(const TriMesh2& mesh, NoSteinerStats& st) {
   st.triangles = std::int64_t(mesh.triangles.size());
   st.vertices = std::int64_t(mesh.vertices.size());
   st.min_angle = min_triangle_angle(mesh);
@@ -259,6 +289,34 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
   st.cdt_triangles = n;
   region_min_angle(mesh, kRegionPCdt, n);
   st.cdt_triangles += n;
+}
+
+}  // namespace
+
+NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, const NoSteinerOptions& options) {
+  const auto start = Clock::now();
+  NoSteinerResult out;
+  NoSteinerStats& st = out.stats;
+  record_bound(domain, st);
+
+  // Each stage either succeeds or records why the next fallback is taken.
+  std::string reason;
+  const std::optional<PolygonQ> q = build_q(domain, st, reason);
+  TriMesh2 mesh;
+  st.path = NoSteinerPath::Cdt;
+  if (q) mesh_from_q(*q, domain, options, mesh, st, reason);
+  if (st.path == NoSteinerPath::Cdt) mesh = p_cdt(domain);
+  st.construction_min_angle = min_triangle_angle(mesh);
+  st.construction_triangles = std::int64_t(mesh.triangles.size());
+  if (options.quality_pass && st.path != NoSteinerPath::Cdt) run_quality_pass(domain, options, mesh, st, reason);
+  st.fallback_reason = st.path == NoSteinerPath::Full ? std::string() : reason;
+  st.pipeline_path = st.path;
+  st.pipeline_min_angle = min_triangle_angle(mesh);
+  st.pipeline_triangles = std::int64_t(mesh.triangles.size());
+  st.pipeline_vertices = std::int64_t(mesh.vertices.size());
+  if (options.compare_cdt) compare_with_cdt(domain, options, mesh, st);
+  add_boundary_edges(domain, mesh);
+  record_final_stats(mesh, st);
   out.mesh = std::move(mesh);
   st.seconds_total = since(start);
   return out;
