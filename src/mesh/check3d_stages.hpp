@@ -4,8 +4,10 @@
 // is the comment block at the top of check3d.cpp.
 //
 //   check3d.cpp           entry points and the stage driver
-//   check3d_topology.cpp  stages 1-3: indices, orientation, faces / conformity
-//                         / hanging vertices / manifold boundary, listed faces
+//   check3d_topology.cpp  stages 1-3: indices, orientation, conformity /
+//                         hanging vertices / manifold boundary, listed faces
+//   check3d_faces.cpp     stage 3 face matching: the boundary faces, faces on
+//                         the same side of two tetrahedra or on three or more
 //   check3d_domain.cpp    stage 4 without facets: input vertices, input-edge
 //                         walks, Steiner points, locate()
 //   check3d_facets.cpp    stage 4 (a) and (c): boundary triangles on facets,
@@ -103,6 +105,11 @@ class Checker3 {
   bool check_boundary_manifold();
   void find_hanging_vertices();
   void check_listed_faces();
+
+  // check3d_faces.cpp
+  // Stage 3 face matching: fills faces_.boundary (and boundary_tet), reports
+  // NonConforming faces.
+  void match_faces();
 
   // check3d_domain.cpp
   void map_input_vertices(const Domain3& d);
