@@ -98,17 +98,21 @@ void print_lfs_integral_line(const Mesh3Run& run) {
             << (sized ? " (I3 ignores the sizing)" : "") << '\n';
 }
 
-// Which octree made the mesh (TetSeparation) and, when the light one was
-// dropped, why and what it cost.
-void print_octree_line(const TetMeshStats& s) {
+// Which octree made the mesh (TetSeparation) and, when lighter ones were
+// dropped, why and what they cost.
+void print_octree_line(const Domain3& domain, const TetMeshStats& s) {
   std::cout << "octree     ";
-  if (!s.separated) {
+  if (!s.separated && s.separated_faces == 0) {
     std::cout << "light (no separating splits, thesis 4.1.7 steps 6 and 9)\n";
     return;
   }
-  std::cout << "separated (thesis 4.1.7 steps 6 and 9)";
+  if (!s.separated)
+    std::cout << "separating splits (thesis 4.1.7 steps 6 and 9) near " << s.separated_faces << " of "
+              << domain.edges.size() + domain.plc.facets.size() << " edges and facets only";
+  else
+    std::cout << "separated (thesis 4.1.7 steps 6 and 9)";
   if (!s.light_rejected.empty())
-    std::cout << "; the light octree's mesh was dropped after " << fmt_seconds(s.seconds_light)
+    std::cout << "; the lighter octrees' meshes were dropped after " << fmt_seconds(s.seconds_light)
               << " s: " << s.light_rejected;
   std::cout << '\n';
 }
@@ -145,7 +149,7 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
                                                fmt(Vec3{s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]})
                                          : std::string("aligned"))
             << "; root side " << fmt(s.root_size) << ", depth " << s.depth << '\n';
-  print_octree_line(s);
+  print_octree_line(domain, s);
   std::cout << "leaves     " << s.leaves << ":";
   for (int k = 0; k < kTetLeafKinds; ++k)
     std::cout << (k ? ", " : " ") << tet_leaf_kind_name(k) << ' ' << s.leaves_per_kind[static_cast<std::size_t>(k)];

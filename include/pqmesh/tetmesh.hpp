@@ -74,10 +74,12 @@ struct TetMeshProgress {
 enum class TetSeparation {
   // The octree without them is meshed first. Its mesh is returned when every
   // leaf became tetrahedra, the checker (pqmesh/check.hpp) finds it valid and
-  // max aspect * alpha <= kMeasuredAspectAlphaC;
-  // otherwise that mesh is dropped and the thesis's construction (Always) is
-  // returned, so the bound the summary prints is met whenever the thesis's
-  // construction meets it.
+  // max aspect * alpha <= kMeasuredAspectAlphaC. When only the aspect bound
+  // fails, up to two more octrees are tried with the splits made only near
+  // the P faces of the leaves above the bound (growing the set each time).
+  // When none is kept, the thesis's construction (Always) is returned, so the
+  // bound the summary prints is met whenever the thesis's construction meets
+  // it.
   Adaptive,
   Always,  // the thesis's construction only. CLI --full-separation
 };
@@ -128,12 +130,15 @@ struct TetMeshStats {
   // unwarped one, and this says why. Empty when warping succeeded or was off.
   std::string warp_failure;
   std::int64_t boundary_faces = 0;
-  // The returned mesh comes from the octree with the separating splits
-  // (TetSeparation). With Adaptive, light_rejected says why the mesh without
-  // them was dropped (a leaf no box job covers, a failed box invariant, the
-  // checker, or the aspect bound) and seconds_light is what building it cost; both stay
-  // empty / 0 when the light mesh was kept.
+  // Which octree made the returned mesh (TetSeparation): separated, the
+  // thesis's (every separating split); else separated_faces > 0, the octree
+  // separated near that many P edges and facets only; else the light octree.
+  // With Adaptive, when a lighter mesh was dropped, light_rejected says why
+  // the last one was (a leaf no box job covers, a failed box invariant, the
+  // checker, or the aspect bound) and seconds_light is what the dropped
+  // constructions cost; both stay empty / 0 when the light mesh was kept.
   bool separated = false;
+  std::int64_t separated_faces = 0;
   std::string light_rejected;
   double seconds_light = 0;
   double max_aspect = 0;  // of the returned mesh (tetrahedron_quality)
@@ -150,10 +155,12 @@ struct TetMeshResult {
 
 // A leaf the box tetrahedra do not handle. An InvalidInput
 // of code Unsupported ("a valid input using a feature we do not handle"):
-// ids() = {leaf node id}; the message names the leaf, its kind and its box.
+// ids() = the leaf node ids; the message names the first leaf, its kind and
+// its box.
 class MeshNotSupported : public InvalidInput {
  public:
   MeshNotSupported(std::int64_t leaf, std::string kind, const std::string& detail);
+  MeshNotSupported(std::vector<std::int64_t> leaves, std::string kind, const std::string& detail);
   const std::string& kind() const { return kind_; }
 
  private:

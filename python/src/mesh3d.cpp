@@ -37,7 +37,8 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("warped") = s.warped, py::arg("warp_rebuilds") = s.warp_rebuilds,
                   py::arg("worst_box_rounds") = s.worst_box_rounds, py::arg("split_squares") = s.split_squares,
                   py::arg("warp_failure") = s.warp_failure, py::arg("boundary_faces") = s.boundary_faces,
-                  py::arg("separated") = s.separated, py::arg("light_rejected") = s.light_rejected,
+                  py::arg("separated") = s.separated,
+                  py::arg("separated_faces") = s.separated_faces, py::arg("light_rejected") = s.light_rejected,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
 }

@@ -89,6 +89,18 @@ def test_max_size_makes_more_elements():
     assert fine.stats["depth"] > coarse.stats["depth"]
 
 
+def test_full_separation_builds_the_thesis_octree():
+    light = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS)
+    thesis = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, full_separation=True)
+    assert_valid(light)
+    assert_valid(thesis)
+    assert not light.stats["separated"] and light.stats["separated_faces"] == 0
+    assert light.stats["light_rejected"] == ""
+    assert thesis.stats["separated"]
+    assert len(thesis.tetrahedra) > len(light.tetrahedra)
+    assert light.max_aspect_ratio <= light.aspect_bound and thesis.max_aspect_ratio <= thesis.aspect_bound
+
+
 def test_cavity():
     points, facets = cube_with_cavity()
     mesh = pqmesh.tetrahedralize(points, facets, holes=[(2, 2, 2)], aligned_grid=True)

@@ -80,7 +80,8 @@ class FacetFinder {
 
 }  // namespace
 
-void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf, TetMesh3& mesh) {
+std::vector<int> add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf,
+                                    TetMesh3& mesh) {
   const Domain3& d = builder.domain();
   const std::vector<std::int64_t> singles = single_faces(mesh.tetrahedra, static_cast<int>(mesh.vertices.size()));
 
@@ -90,6 +91,8 @@ void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std:
   mesh.face_markers.clear();
   mesh.faces.reserve(singles.size());
   mesh.face_markers.reserve(singles.size());
+  std::vector<int> facet_of_face;
+  facet_of_face.reserve(singles.size());
   for (const std::int64_t code : singles) {
     const std::int64_t t = code / 4;
     const std::array<int, 3> f = outward_face(mesh.tetrahedra[static_cast<std::size_t>(t)], static_cast<int>(code % 4));
@@ -123,7 +126,9 @@ void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std:
                           std::to_string(leaf) + " lies on no input facet of its leaf");
     mesh.faces.push_back(f);
     mesh.face_markers.push_back(d.plc.facets[static_cast<std::size_t>(found)].marker);
+    facet_of_face.push_back(found);
   }
+  return facet_of_face;
 }
 
 }  // namespace pqmesh::mesh3d

@@ -27,7 +27,9 @@
 
 namespace pqmesh::mesh3d {
 
-// Fills mesh.faces and mesh.face_markers (Facet3::marker of the facet found).
-void add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf, TetMesh3& mesh);
+// Fills mesh.faces and mesh.face_markers (Facet3::marker of the facet found);
+// returns the facet id of every boundary triangle.
+std::vector<int> add_boundary_faces(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> tet_leaf,
+                                    TetMesh3& mesh);
 
 }  // namespace pqmesh::mesh3d

@@ -67,7 +67,7 @@ BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder) {
 BoxPlan plan_all_kinds(const mv3d::OctreeBuilder& builder) {
   tet3d::BoxJobs bj = tet3d::box_jobs(builder);
   if (!bj.problems.empty())
-    throw MeshNotSupported(-1, "problem",
+    throw MeshNotSupported({bj.problem_leaves.begin(), bj.problem_leaves.end()}, "problem",
                            bj.problems.front() + ": not supported by the 3D mesher (" +
                                std::to_string(bj.problems.size()) + " leaves not covered)");
   BoxPlan plan;

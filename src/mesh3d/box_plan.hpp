@@ -48,7 +48,8 @@ BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder);
 
 // Every kind (tet3d/box_jobs.hpp: empty, facet, edge, united vertex boxes,
 // two-facet), for octrees on the generic grid. Leaves box_jobs cannot cover
-// (its `problems`) throw MeshNotSupported listing the first of them.
+// (its `problems`) throw MeshNotSupported listing the first of them, with
+// every such leaf in ids().
 BoxPlan plan_all_kinds(const mv3d::OctreeBuilder& builder);
 
 }  // namespace pqmesh::mesh3d

@@ -119,6 +119,10 @@ OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
                            (finite ? " has a size that is not a positive finite number" : " has a non-finite point"),
                        {static_cast<std::int64_t>(i)}, sf.path, line);
   }
+  const bool scoped = !options_.separate_edges.empty() || !options_.separate_facets.empty();
+  if (scoped && (options_.separate_edges.size() != domain.edges.size() ||
+                 options_.separate_facets.size() != domain.plc.facets.size()))
+    throw InternalError("mv3d octree: separate_edges / separate_facets need one flag per edge / facet");
   const Cube nowhere{{1, 1, 1}, {0, 0, 0}};
   vertex_box_.assign(domain.plc.vertices.size(), nowhere);
   facet_vertices_.resize(domain.plc.facets.size());
@@ -653,13 +657,22 @@ bool OctreeBuilder::shielded(std::int32_t node) const {
 }
 
 // §4.1.4 "we begin by splitting every unprotected box containing a P edge and
-// its balance-adjacent boxes" (§4.1.5 the same for facets). The set is fixed
-// before any of them is split, so that every box is split at most once.
+// its balance-adjacent boxes" (§4.1.5 the same for facets), or only the boxes
+// of the edges (facets) OctreeOptions::separate_edges (separate_facets) names.
+// The set is fixed before any of them is split, so that every box is split at
+// most once.
 std::vector<std::int32_t> OctreeBuilder::separation_set(bool facets) const {
+  const std::vector<char>& only = facets ? options_.separate_facets : options_.separate_edges;
+  const bool every = options_.separate_edges.empty() && options_.separate_facets.empty();
+  const auto starts = [&](const NodeData3& d) {  // holds a face the options separate
+    const std::vector<int>& faces = facets ? d.facets : d.edges;
+    if (every) return !faces.empty();
+    return std::any_of(faces.begin(), faces.end(), [&](int f) { return only[static_cast<std::size_t>(f)] != 0; });
+  };
   std::vector<std::int32_t> out, near;
   for (const std::int32_t n : leaves_by_id()) {
     const NodeData3& d = data(n);
-    if (!d.has_component || shielded(n) || (facets ? d.facets.empty() : d.edges.empty())) continue;
+    if (!d.has_component || shielded(n) || !starts(d)) continue;
     out.push_back(n);
     tree_.neighbours(n, near);
     for (const std::int32_t m : near) {

@@ -85,9 +85,14 @@ struct OctreeOptions {
   // facet box and its balance-adjacent boxes split once before protection).
   // With them every leaf is one of the thesis's kinds (without them a
   // protected box may hold three facets of a vertex outside it); they cost
-  // about 10x the leaves (docs/algorithm/octree3d.md). Off only
-  // for callers that study other stages on smaller trees (the tet3d tests).
+  // 10 to 25 times the tetrahedra (docs/algorithm/octree3d.md). The 3D
+  // mesher tries the octree without them first (docs/algorithm/mesh3d.md).
   bool separate = true;
+  // With separate: when not empty, only leaves holding a P edge (facet) whose
+  // flag is set start a separation set, so the splits stay near those faces
+  // (flags indexed by Domain3 edge / facet id; sizes equal to the counts).
+  // Empty: every edge and facet, the thesis's rule.
+  std::vector<char> separate_edges, separate_facets;
   // Generic grid (tree/root_cube.hpp choose_generic_root_cube;
   // docs/algorithm/octree3d.md): every box plane is shifted by a fixed offset
   // so that no input vertex coordinate lies on a box plane of any level the

@@ -22,6 +22,7 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   BoxJobs out;
   std::vector<char> vertex_done(domain.plc.vertices.size(), 0);
   auto problem = [&](std::int32_t n, const std::string& why) {
+    out.problem_leaves.push_back(n);
     out.problems.push_back("leaf " + std::to_string(n) + " (level " + std::to_string(tree.level(n)) + "; " +
                            mv3d::faces_text(domain, mv3d::leaf_faces(builder, n)) + "): " + why);
   };
@@ -59,6 +60,8 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
   }
   std::sort(out.problems.begin(), out.problems.end());
   out.problems.erase(std::unique(out.problems.begin(), out.problems.end()), out.problems.end());
+  std::sort(out.problem_leaves.begin(), out.problem_leaves.end());
+  out.problem_leaves.erase(std::unique(out.problem_leaves.begin(), out.problem_leaves.end()), out.problem_leaves.end());
   return out;
 }
 

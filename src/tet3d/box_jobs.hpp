@@ -34,6 +34,7 @@ struct BoxJobs {
   std::array<std::int64_t, mv3d::kLeafKinds> leaves{};     // leaves per LeafKind
   std::int64_t united_pieces = 0;                          // leaves covered by vertex jobs
   std::vector<std::string> problems;                       // leaves that no job covers, one line each
+  std::vector<std::int32_t> problem_leaves;                // their node ids, ascending
 };
 
 BoxJobs box_jobs(const mv3d::OctreeBuilder& builder);

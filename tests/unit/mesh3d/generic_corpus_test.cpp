@@ -33,11 +33,11 @@ TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
   const double alpha = compute_alpha(d.plc).radians;
   const double aspect_alpha = test::aspect_times_alpha(q.aspect_ratio.max, alpha);
   std::printf("%-18s %zu tets; jobs empty %lld, facet %lld, edge %lld, vertex %lld, two-facet %lld; "
-              "aspect max %.1f, x alpha %.1f (C = %.0f), dihedral %.2f..%.2f deg, %s octree%s\n",
+              "aspect max %.1f, x alpha %.1f (C = %.0f), dihedral %.2f..%.2f deg, %s%s\n",
               what.c_str(), r.mesh.tetrahedra.size(), static_cast<long long>(s.empty_jobs),
               static_cast<long long>(s.facet_jobs), static_cast<long long>(s.edge_jobs),
               static_cast<long long>(s.vertex_jobs), static_cast<long long>(s.two_facet_jobs), q.aspect_ratio.max,
-              aspect_alpha, test::kAspectAlphaC, q.min_angle.min, q.max_angle.max, s.separated ? "separated" : "light",
+              aspect_alpha, test::kAspectAlphaC, q.min_angle.min, q.max_angle.max, test::octree_used(s).c_str(),
               s.warp_failure.empty() ? "" : ", unwarped fallback");
   EXPECT_LE(aspect_alpha, test::kAspectAlphaC) << what << ": max aspect " << q.aspect_ratio.max << " at alpha "
                                                << alpha << " rad";

@@ -18,6 +18,17 @@
 
 namespace pqmesh::test {
 
+// Which octree made a mesh (TetSeparation), for the tests' lines: "light",
+// "near N faces" or "thesis", with the reason the last lighter mesh was
+// dropped.
+inline std::string octree_used(const TetMeshStats& s) {
+  std::string out = s.separated ? "thesis octree"
+                    : s.separated_faces > 0 ? "octree separated near " + std::to_string(s.separated_faces) + " faces"
+                                            : "light octree";
+  if (!s.light_rejected.empty()) out += " (dropped: " + s.light_rejected.substr(0, 100) + ")";
+  return out;
+}
+
 // Three non-collinear vertices of facet f's outer loop (exact: some
 // projection of the three points is not collinear).
 inline bool facet_plane(const Domain3& d, std::size_t f, Vec3& a, Vec3& b, Vec3& c) {

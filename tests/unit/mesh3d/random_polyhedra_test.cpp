@@ -59,6 +59,7 @@
 #include <gtest/gtest.h>
 
 #include "aspect_alpha_property.hpp"
+#include "mesh_check_util.hpp"
 
 #include <algorithm>
 #include <array>
@@ -127,6 +128,7 @@ struct SeedRecord {
   bool warp_fallback = false;  // TetMeshStats::warp_failure non-empty: the unwarped mesh was returned
   std::int64_t worst_box_rounds = 0;  // TetMeshStats::worst_box_rounds (printed when not 0)
   bool separated = false;      // TetMeshStats::separated: the thesis's octree made the mesh
+  std::string octree;          // test::octree_used
   double cpu_seconds = 0;
   double aspect_alpha() const { return aspect * alpha; }
 };
@@ -159,6 +161,7 @@ SeedRecord mesh_seed(std::uint64_t seed, const PolyhedronOptions& options) {
     r.warp_fallback = !m.stats.warp_failure.empty();
     r.worst_box_rounds = m.stats.worst_box_rounds;
     r.separated = m.stats.separated;
+    r.octree = test::octree_used(m.stats);
     const CheckReport c = check_mesh(m.mesh, d);
     if (c.valid()) {
       r.status = SeedRecord::Status::Valid;
@@ -192,9 +195,9 @@ void print_record(const SeedRecord& r) {
   const std::string rounds =
       r.worst_box_rounds > 0 ? ", " + std::to_string(r.worst_box_rounds) + " worst-box rounds" : "";
   if (r.status == SeedRecord::Status::Valid)
-    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f, %s octree%s%s, %.2f s cpu\n",
+    std::printf("seed %3llu: %9lld tets, alpha %6.2f deg, aspect %10.1f, aspect*alpha %10.1f, %s%s%s, %.2f s cpu\n",
                 static_cast<unsigned long long>(r.seed), static_cast<long long>(r.tets), deg, r.aspect,
-                r.aspect_alpha(), r.separated ? "separated" : "light", r.warp_fallback ? ", WARP FALLBACK" : "",
+                r.aspect_alpha(), r.octree.c_str(), r.warp_fallback ? ", WARP FALLBACK" : "",
                 rounds.c_str(), r.cpu_seconds);
   else
     std::printf("seed %3llu: FAILED (%s), alpha %.2f deg, %.2f s cpu: %s\n", static_cast<unsigned long long>(r.seed),

@@ -1,0 +1,47 @@
+#pragma once
+// The aspect review of a construction (docs/algorithm/mesh3d.md "Light
+// construction first"): the worst aspect ratio of the mesh and the P faces
+// near its tetrahedra above the bound C / alpha, which the next construction
+// separates.
+#include <cstdint>
+#include <vector>
+
+#include "mv3d/octree_builder.hpp"
+#include "pqmesh/mesh.hpp"
+
+namespace pqmesh::mesh3d {
+
+// A set of P edges and facets: one flag per Domain3 edge / facet id.
+struct FaceFlags {
+  std::vector<char> edges, facets;
+  std::int64_t count() const;
+  // Sets every flag set in `more` (same sizes); true when one was not set yet.
+  bool merge(const FaceFlags& more);
+  // Flags every edge of a flagged facet: a protected leaf holding facets of
+  // an edge outside it (a leaf of no thesis kind) is split only by the edge
+  // separation of §4.1.7 step 6, which comes before edge protection. O(edges).
+  void add_edges_of_facets(const Domain3& domain);
+};
+
+// Every flag clear, sized for the domain's edges and facets.
+FaceFlags no_faces(const Domain3& domain);
+
+// Flags the edges and facets of leaf's component, and every edge at a vertex
+// that component holds with its two facets. Cost O(edges) per such vertex.
+void flag_leaf_faces(const mv3d::OctreeBuilder& builder, std::int32_t leaf, FaceFlags& out);
+
+struct AspectReview {
+  double max_aspect = 0;  // NaN or infinity for a degenerate tetrahedron
+  // flag_leaf_faces of the leaf of each tetrahedron with
+  // aspect * alpha > kMeasuredAspectAlphaC.
+  FaceFlags over_bound;
+};
+
+// tet_leaf: the leaf (node id of builder's tree) of every tetrahedron of mesh.
+// Cost: one aspect ratio per tetrahedron through TetrahedronQualityMemo (the
+// octree's tetrahedra are a few thousand shapes repeated), O(edges) per vertex
+// held by a leaf above the bound.
+AspectReview review_aspect(const mv3d::OctreeBuilder& builder, const std::vector<std::int32_t>& tet_leaf,
+                           const TetMesh3& mesh, double alpha);
+
+}  // namespace pqmesh::mesh3d

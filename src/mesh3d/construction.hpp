@@ -1,0 +1,43 @@
+#pragma once
+// One construction of the 3D pipeline (docs/algorithm/mesh3d.md): octree with
+// the separating splits asked for, box plan, box tetrahedra, boundary
+// triangles with facet markers, region attribute, and the aspect review that
+// tet_mesh's choice of octree reads (TetSeparation, pqmesh/tetmesh.hpp).
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "mesh3d/aspect_review.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+
+namespace pqmesh::mesh3d {
+
+// Which separating splits (§4.1.7 steps 6 and 9) the octree makes: none
+// (separate false), those of the leaves holding a face of `faces`, or, with
+// `faces` empty, the thesis's (every edge and facet box).
+struct Separation {
+  bool separate = false;
+  FaceFlags faces;
+  bool thesis() const { return separate && faces.edges.empty() && faces.facets.empty(); }
+};
+
+struct Construction {
+  TetMeshResult result;  // stats: every field but light_rejected / seconds_light
+  AspectReview review;
+  std::vector<int> face_facets;  // Domain3 facet id of each boundary triangle of result.mesh
+  // Not empty when some leaves have no box job (tet3d::box_jobs problems) and
+  // the octree is lighter than the thesis's: the first problem; result is then
+  // empty and review.over_bound holds flag_leaf_faces of every such leaf
+  // (with add_edges_of_facets). On
+  // the thesis's octree MeshNotSupported is thrown instead.
+  std::string unsupported;
+};
+
+// alpha: the domain's (radians), for the review. t0: the start of tet_mesh,
+// for options.progress. Throws InvalidInput for a bad size field or
+// max_size, MeshNotSupported (above), InternalError when an invariant breaks.
+Construction construct(const Domain3& domain, const TetMeshOptions& options, const Separation& separation,
+                       double alpha, std::chrono::steady_clock::time_point t0);
+
+}  // namespace pqmesh::mesh3d
