@@ -1,0 +1,245 @@
+#include "improve3d/collapse_check.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::improve3d::detail {
+
+namespace {
+
+template <std::size_t K>
+bool holds(const std::array<int, K>& element, int x) {
+  return std::find(element.begin(), element.end(), x) != element.end();
+}
+
+}  // namespace
+
+Collapser::Collapser(CollapseMesh& mesh, const VertexClasses& classes, const SizeBound& size, QualityLimits limits,
+                     TetrahedronQualityMemo& memo)
+    : mesh_(mesh), classes_(classes), size_(size), limits_(limits), memo_(memo) {
+  const std::size_t n = static_cast<std::size_t>(mesh.vertex_count());
+  for (auto* marks : {&near_u_, &ring_, &near_v_, &boundary_near_u_, &boundary_ring_}) marks->assign(n, 0);
+}
+
+bool Collapser::refuse(Refusal why) {
+  ++refusals_[static_cast<std::size_t>(why)];
+  return false;
+}
+
+// Sets x's mark to the current stamp; returns whether it was not set yet.
+bool Collapser::mark(std::vector<std::uint32_t>& marks, int x) const {
+  std::uint32_t& m = marks[static_cast<std::size_t>(x)];
+  if (m == stamp_) return false;
+  m = stamp_;
+  return true;
+}
+
+bool Collapser::marked(const std::vector<std::uint32_t>& marks, int x) const {
+  return marks[static_cast<std::size_t>(x)] == stamp_;
+}
+
+bool Collapser::try_collapse(int u, int v) {
+  u_ = u;
+  v_ = v;
+  if (++stamp_ == 0) {  // wrapped: clear every mark so no old mark equals a new stamp
+    for (auto* marks : {&near_u_, &ring_, &near_v_, &boundary_near_u_, &boundary_ring_})
+      std::fill(marks->begin(), marks->end(), 0);
+    stamp_ = 1;
+  }
+  if (!class_allows()) return refuse(Refusal::Class);
+  if (!split_star()) return refuse(Refusal::NoEdge);
+  if (!one_region()) return refuse(Refusal::Region);
+  if (!link_condition()) return refuse(Refusal::Link);
+  if (!boundary_allows()) return refuse(Refusal::Boundary);
+  if (!within_size()) return refuse(Refusal::Size);
+  if (!moved_positive()) return refuse(Refusal::Orientation);
+  if (!quality_allows()) return refuse(Refusal::Quality);
+  mesh_.apply({u_, v_, dying_, moving_, new_aspect_, dying_faces_, moving_faces_});
+  return true;
+}
+
+// Rule 1 without the boundary triangles (edge_vertex_moves_along_edge has the
+// rest): u is no input vertex and facets(u) lies in facets(v); a vertex on an
+// input edge goes to an input vertex or to a vertex on the same edge.
+bool Collapser::class_allows() const {
+  const VertexClass cu = classes_.of(u_);
+  if (cu == VertexClass::Input || !classes_.facets_within(u_, v_)) return false;
+  if (cu != VertexClass::Edge) return true;
+  return classes_.of(v_) == VertexClass::Input || classes_.same_facets(u_, v_);
+}
+
+// Gathers the tetrahedra and boundary triangles of u and v and splits them;
+// false when no tetrahedron holds both (the edge is gone).
+bool Collapser::split_star() {
+  u_tets_.clear();
+  dying_.clear();
+  moving_.clear();
+  mesh_.tets_of(u_, u_tets_);
+  for (const int t : u_tets_) (holds(mesh_.tet(t), v_) ? dying_ : moving_).push_back(t);
+  if (dying_.empty()) return false;
+  v_tets_.clear();
+  resting_.clear();
+  mesh_.tets_of(v_, v_tets_);
+  for (const int t : v_tets_)
+    if (!holds(mesh_.tet(t), u_)) resting_.push_back(t);
+  u_faces_.clear();
+  v_faces_.clear();
+  dying_faces_.clear();
+  moving_faces_.clear();
+  resting_faces_.clear();
+  mesh_.faces_of(u_, u_faces_);
+  mesh_.faces_of(v_, v_faces_);
+  for (const int f : u_faces_) (holds(mesh_.face(f), v_) ? dying_faces_ : moving_faces_).push_back(f);
+  for (const int f : v_faces_)
+    if (!holds(mesh_.face(f), u_)) resting_faces_.push_back(f);
+  return true;
+}
+
+// Tetrahedra keep their region: re-pointing u's tetrahedra to v moves the
+// region boundary unless the star of u lies in one region.
+bool Collapser::one_region() const {
+  const int marker = mesh_.tet_marker(u_tets_.front());
+  return std::all_of(u_tets_.begin(), u_tets_.end(), [&](int t) { return mesh_.tet_marker(t) == marker; });
+}
+
+bool Collapser::link_condition() { return vertex_links_agree() && edge_links_agree(); }
+
+// Lk(u) and Lk(v) share no vertex outside Lk(uv) (the ring); the virtual
+// vertex is virtual_vertex_links_agree's.
+bool Collapser::vertex_links_agree() {
+  near_u_list_.clear();
+  for (const int t : u_tets_)
+    for (const int x : mesh_.tet(t))
+      if (x != u_ && mark(near_u_, x)) near_u_list_.push_back(x);
+  for (const int t : dying_)
+    for (const int x : mesh_.tet(t))
+      if (x != u_ && x != v_) mark(ring_, x);
+  for (const int t : resting_)
+    for (const int x : mesh_.tet(t)) {
+      if (x == v_ || !mark(near_v_, x)) continue;
+      if (marked(near_u_, x) && !marked(ring_, x)) return false;
+    }
+  return true;
+}
+
+// An edge ab of Lk(u) and of Lk(v) is an edge of Lk(uv): if a moving
+// tetrahedron (u a b .) and a resting one (v a b .) exist, a dying one
+// (u v a b) does. Both ends are then in Lk(u) and Lk(v), hence (after
+// vertex_links_agree) in the ring, which filters the candidates.
+bool Collapser::edge_links_agree() const {
+  auto some_holds = [&](const std::vector<int>& tets, int a, int b) {
+    return std::any_of(tets.begin(), tets.end(), [&](int t) { return holds(mesh_.tet(t), a) && holds(mesh_.tet(t), b); });
+  };
+  for (const int t : resting_) {
+    const auto& k = mesh_.tet(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const int a = k[static_cast<std::size_t>(i)], b = k[static_cast<std::size_t>(j)];
+        if (a == v_ || b == v_ || !marked(ring_, a) || !marked(ring_, b)) continue;
+        if (some_holds(moving_, a, b) && !some_holds(dying_, a, b)) return false;
+      }
+  }
+  return true;
+}
+
+bool Collapser::boundary_allows() {
+  return virtual_vertex_links_agree() && edge_vertex_moves_along_edge() && no_duplicate_face();
+}
+
+// The link condition at the virtual vertex w joined to every boundary
+// triangle: w is in Lk(u) and Lk(v) when both are boundary vertices, and then
+// in Lk(uv) only when uv is a boundary edge; an edge xw is in Lk(u) and Lk(v)
+// when ux and vx are boundary edges, and then in Lk(uv) only when uvx is a
+// boundary triangle.
+bool Collapser::virtual_vertex_links_agree() {
+  if (u_faces_.empty()) return true;
+  if (!v_faces_.empty() && dying_faces_.empty()) return false;
+  for (const int f : u_faces_)
+    for (const int x : mesh_.face(f))
+      if (x != u_) mark(boundary_near_u_, x);
+  for (const int f : dying_faces_)
+    for (const int x : mesh_.face(f))
+      if (x != u_ && x != v_) mark(boundary_ring_, x);
+  for (const int f : resting_faces_)
+    for (const int x : mesh_.face(f))
+      if (x != v_ && marked(boundary_near_u_, x) && !marked(boundary_ring_, x)) return false;
+  return true;
+}
+
+// A vertex on an input edge collapses along it: every facet of u has a
+// boundary triangle on uv (the dying triangles lie on facets of u, as all of
+// u's do). For u inside a facet, dying triangles exist after
+// virtual_vertex_links_agree and all lie on its one facet.
+bool Collapser::edge_vertex_moves_along_edge() const {
+  if (classes_.of(u_) != VertexClass::Edge) return true;
+  const auto on_uv = [&](int facet) {
+    return std::any_of(dying_faces_.begin(), dying_faces_.end(), [&](int f) { return mesh_.face_facet(f) == facet; });
+  };
+  const auto facets = classes_.facets_of(u_);
+  return std::all_of(facets.begin(), facets.end(), on_uv);
+}
+
+// A moving boundary triangle (u a b) becomes (v a b), which must not exist yet.
+bool Collapser::no_duplicate_face() const {
+  for (const int f : moving_faces_) {
+    const auto& k = mesh_.face(f);
+    for (const int g : resting_faces_) {
+      const auto& h = mesh_.face(g);
+      bool same = true;
+      for (const int x : k) same = same && (x == u_ || holds(h, x));
+      if (same) return false;
+    }
+  }
+  return true;
+}
+
+// Rule 5: every new edge vx (x a neighbour of u, not of v) within the bound.
+bool Collapser::within_size() const {
+  if (!size_.bounded()) return true;
+  for (const int x : near_u_list_) {
+    if (x == v_ || marked(near_v_, x) || marked(ring_, x)) continue;
+    if (!size_.allows(mesh_.point(v_), mesh_.point(x))) return false;
+  }
+  return true;
+}
+
+std::array<int, 4> Collapser::moved(int t) const {
+  std::array<int, 4> k = mesh_.tet(t);
+  for (int& x : k)
+    if (x == u_) x = v_;
+  return k;
+}
+
+// Rule 3: exact orientation of every moved tetrahedron.
+bool Collapser::moved_positive() const {
+  for (const int t : moving_) {
+    const auto k = moved(t);
+    if (orient3d(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])) != Sign::Positive)
+      return false;
+  }
+  return true;
+}
+
+// Rule 4: the new region (resting and moved tetrahedra) stays within
+// min(cap, max(old region worst, target)); the old region is the tetrahedra
+// of u and v. NaN never passes (the comparisons fail).
+bool Collapser::quality_allows() {
+  double old_worst = 0, resting_worst = 0;
+  for (const int t : u_tets_) old_worst = std::max(old_worst, mesh_.aspect(t));
+  for (const int t : resting_) resting_worst = std::max(resting_worst, mesh_.aspect(t));
+  old_worst = std::max(old_worst, resting_worst);
+  const double limit = std::min(limits_.cap, std::max(old_worst, limits_.target));
+  if (!(resting_worst <= limit)) return false;
+  new_aspect_.clear();
+  for (const int t : moving_) {
+    const auto k = moved(t);
+    const double a = memo_(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])).aspect_ratio;
+    if (!(a <= limit)) return false;
+    new_aspect_.push_back(a);
+  }
+  return true;
+}
+
+}  // namespace pqmesh::improve3d::detail

@@ -1,0 +1,77 @@
+#pragma once
+// One edge collapse: the rules of improve.hpp checked in order of cost
+// (cheapest first), then the change applied to the CollapseMesh.
+//
+// Notation: u is deleted, v kept. The star of u splits into the tetrahedra
+// holding v ("dying": they vanish) and the others ("moving": u becomes v);
+// the tetrahedra of v not holding u stay as they are ("resting"). The ring is
+// the set of vertices of the dying tetrahedra other than u and v, that is the
+// vertices of Lk(uv). Boundary triangles split the same way.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "improve3d/collapse_mesh.hpp"
+#include "improve3d/size_bound.hpp"
+#include "improve3d/vertex_classes.hpp"
+#include "quality/tetrahedron_quality_memo.hpp"
+
+namespace pqmesh::improve3d::detail {
+
+struct QualityLimits {
+  double cap = 0;     // ImproveOptions::aspect_cap
+  double target = 0;  // ImproveOptions::target_aspect
+};
+
+// Why collapses were refused, for tuning and the tests' reports.
+enum class Refusal : int { Class, NoEdge, Region, Link, Boundary, Size, Orientation, Quality };
+inline constexpr int kRefusalKinds = 8;
+
+class Collapser {
+ public:
+  Collapser(CollapseMesh& mesh, const VertexClasses& classes, const SizeBound& size, QualityLimits limits,
+            TetrahedronQualityMemo& memo);
+
+  // Collapses u onto v when every rule holds; returns whether it did.
+  bool try_collapse(int u, int v);
+  const std::array<std::int64_t, kRefusalKinds>& refusals() const { return refusals_; }
+
+ private:
+  bool refuse(Refusal why);
+  bool class_allows() const;
+  bool split_star();
+  bool one_region() const;
+  bool link_condition();
+  bool vertex_links_agree();
+  bool edge_links_agree() const;
+  bool boundary_allows();
+  bool virtual_vertex_links_agree();
+  bool edge_vertex_moves_along_edge() const;
+  bool no_duplicate_face() const;
+  bool within_size() const;
+  bool moved_positive() const;
+  bool quality_allows();
+  std::array<int, 4> moved(int t) const;
+  bool mark(std::vector<std::uint32_t>& marks, int x) const;
+  bool marked(const std::vector<std::uint32_t>& marks, int x) const;
+
+  CollapseMesh& mesh_;
+  const VertexClasses& classes_;
+  const SizeBound& size_;
+  QualityLimits limits_;
+  TetrahedronQualityMemo& memo_;
+
+  int u_ = -1, v_ = -1;
+  std::vector<int> u_tets_, v_tets_, dying_, moving_, resting_;
+  std::vector<int> u_faces_, v_faces_, dying_faces_, moving_faces_, resting_faces_;
+  std::vector<int> near_u_list_;
+  std::vector<double> new_aspect_;
+  // Marks equal to stamp_ are set in the current try: neighbours of u, ring,
+  // neighbours of v, boundary neighbours of u, third vertices of the dying
+  // boundary triangles.
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> near_u_, ring_, near_v_, boundary_near_u_, boundary_ring_;
+  std::array<std::int64_t, kRefusalKinds> refusals_{};
+};
+
+}  // namespace pqmesh::improve3d::detail

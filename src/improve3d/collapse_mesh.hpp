@@ -1,0 +1,82 @@
+#pragma once
+// The mesh while it is coarsened: flat arrays (docs/DESIGN_RULES.md "Data
+// layout and speed") that a collapse edits in place.
+//
+// Vertex -> tetrahedra adjacency is a singly linked list per vertex threaded
+// through the tetrahedron corners: corner 4 t + i (vertex tets[t][i]) links
+// to the next corner of the same vertex. Likewise boundary triangles, corner
+// 3 f + i. Invariant: the list of a live vertex holds every live element of
+// that vertex exactly once, plus possibly dead elements, which a traversal
+// unlinks as it meets them (so each dead corner costs one step once).
+// Corner ids are int: meshes up to 500 million tetrahedra.
+//
+// Element ids never change while collapsing; write_back() renumbers the
+// survivors compactly in their old order (deterministic).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "pqmesh/mesh.hpp"
+#include "pqmesh/vec.hpp"
+#include "quality/tetrahedron_quality_memo.hpp"
+
+namespace pqmesh::improve3d::detail {
+
+class CollapseMesh {
+ public:
+  // Computes every tetrahedron's aspect ratio (tetrahedron_quality, through memo).
+  CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facets, TetrahedronQualityMemo& memo);
+
+  int vertex_count() const { return static_cast<int>(points_.size()); }
+  bool vertex_alive(int v) const { return vertex_alive_[static_cast<std::size_t>(v)] != 0; }
+  const Vec3& point(int v) const { return points_[static_cast<std::size_t>(v)]; }
+  const std::array<int, 4>& tet(int t) const { return tets_[static_cast<std::size_t>(t)]; }
+  int tet_marker(int t) const { return tet_markers_[static_cast<std::size_t>(t)]; }
+  double aspect(int t) const { return aspect_[static_cast<std::size_t>(t)]; }
+  const std::array<int, 3>& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
+  int face_facet(int f) const { return face_facets_[static_cast<std::size_t>(f)]; }
+  std::int64_t live_tets() const { return live_tets_; }
+  std::int64_t live_vertices() const { return live_vertices_; }
+
+  // Appends the live tetrahedra (boundary triangles) of v to out, in list
+  // order, unlinking dead ones met on the way.
+  void tets_of(int v, std::vector<int>& out);
+  void faces_of(int v, std::vector<int>& out);
+
+  struct Collapse {
+    int u = -1, v = -1;
+    std::span<const int> dying_tets;     // hold u and v
+    std::span<const int> moving_tets;    // hold u, not v: u becomes v
+    std::span<const double> new_aspect;  // of moving_tets[i] after the change
+    std::span<const int> dying_faces;    // boundary triangles holding u and v
+    std::span<const int> moving_faces;   // boundary triangles holding u, not v
+  };
+  // Deletes u as described; the caller has checked the rules (collapse_check.hpp).
+  void apply(const Collapse& c);
+
+  double worst_aspect() const;
+  // The survivors, renumbered in their old order, into mesh and face_facets.
+  void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
+
+ private:
+  void link_tets();
+  void link_faces();
+
+  std::vector<Vec3> points_;
+  std::vector<int> vertex_markers_;
+  std::vector<std::uint8_t> vertex_alive_;
+  std::vector<std::array<int, 4>> tets_;
+  std::vector<int> tet_markers_;
+  std::vector<double> aspect_;
+  std::vector<std::uint8_t> tet_alive_;
+  std::vector<int> tet_head_, tet_next_;
+  std::vector<std::array<int, 3>> faces_;
+  std::vector<int> face_markers_, face_facets_;
+  std::vector<std::uint8_t> face_alive_;
+  std::vector<int> face_head_, face_next_;
+  bool has_vertex_markers_ = false, has_tet_markers_ = false, has_face_markers_ = false;
+  std::int64_t live_tets_ = 0, live_vertices_ = 0;
+};
+
+}  // namespace pqmesh::improve3d::detail

@@ -1,0 +1,50 @@
+#pragma once
+// The order of the collapses: edges by length, shortest first, ties by
+// (smaller id, larger id), so the output does not depend on anything but the
+// input (docs/DESIGN_RULES.md "Determinism").
+//
+// A pass starts from every live edge, sorted once; edges created or changed
+// by collapses go to a heap; pop() takes the smaller of the two heads. An
+// entry carries the versions of its two vertices when it was pushed: a
+// vertex's version grows each time it receives a collapse, and then all its
+// edges are pushed anew, so an entry whose versions are not current is stale
+// and the caller skips it.
+#include <cstddef>
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+namespace pqmesh::improve3d::detail {
+
+struct EdgeEntry {
+  double length2 = 0;  // squared length (a construction; equal doubles tie by ids)
+  int a = -1, b = -1;  // a < b
+  std::uint32_t version_a = 0, version_b = 0;
+};
+
+// Strict order of the entries: (length2, a, b); equal keys are copies of one
+// edge, and only the current one (if any) is used.
+inline bool earlier(const EdgeEntry& x, const EdgeEntry& y) {
+  if (x.length2 != y.length2) return x.length2 < y.length2;
+  if (x.a != y.a) return x.a < y.a;
+  return x.b < y.b;
+}
+
+class EdgeQueue {
+ public:
+  // The sorted start of a pass.
+  void start(std::vector<EdgeEntry> entries);
+  void push(const EdgeEntry& e) { heap_.push(e); }
+  bool empty() const { return next_ == sorted_.size() && heap_.empty(); }
+  EdgeEntry pop();
+
+ private:
+  struct Later {
+    bool operator()(const EdgeEntry& x, const EdgeEntry& y) const { return earlier(y, x); }
+  };
+  std::vector<EdgeEntry> sorted_;
+  std::size_t next_ = 0;
+  std::priority_queue<EdgeEntry, std::vector<EdgeEntry>, Later> heap_;
+};
+
+}  // namespace pqmesh::improve3d::detail

@@ -1,0 +1,60 @@
+#pragma once
+// Coarsening of a valid tetrahedral mesh by edge collapse, monotone in quality
+// (../shared/IMPROVEMENT.md "The rule that keeps a guarantee").
+//
+// A collapse of edge (u, v) deletes u: every tetrahedron of u is re-pointed to
+// v and the tetrahedra holding both vanish. Vertices never move, so every
+// remaining vertex keeps the exact coordinates the checker accepted. A
+// collapse is accepted only when all of these hold (collapse_check.hpp):
+//   1. vertex classes (vertex_classes.hpp): u is no input vertex, its facet
+//      set lies in v's, and a vertex on an input edge moves along that edge;
+//   2. the link condition on the mesh closed by a virtual vertex joined to
+//      every boundary triangle, and no duplicate boundary triangle;
+//   3. every new tetrahedron is positively oriented (exact orient3d);
+//   4. the worst aspect ratio of the changed region (the tetrahedra of v
+//      after) is at most min(aspect_cap, max(old region worst, target_aspect)),
+//      the old region being the tetrahedra of u and v before;
+//   5. no new edge is longer than the size bound.
+// With aspect_cap = the construction's worst aspect ratio, the coarsened
+// mesh's worst never exceeds it, so every bound proved for the construction
+// holds for the result.
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "pqmesh/domain.hpp"
+#include "pqmesh/mesh.hpp"
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::improve3d {
+
+struct ImproveOptions {
+  // No accepted collapse makes any tetrahedron's aspect ratio exceed this (the caller passes the
+  // construction's worst aspect ratio, so the mesh's worst never gets worse: the guarantee survives).
+  double aspect_cap = std::numeric_limits<double>::infinity();
+  // A collapse may raise the worst aspect ratio of the region it changes up to
+  // max(the old region's worst, target_aspect), never above aspect_cap.
+  double target_aspect = 6.0;
+  // Size bound (the user's --max-size and size field): a collapse is refused if a new edge is longer than
+  // sqrt(3) * min(max_size, min_i sizes[i] + |m - points[i]|) at its midpoint m (max_size 0 and no points: no bound).
+  double max_size = 0;
+  std::vector<Vec3> size_points;
+  std::vector<double> sizes;
+};
+
+struct ImproveStats {
+  std::int64_t tetrahedra_before = 0, tetrahedra_after = 0, vertices_before = 0, vertices_after = 0;
+  std::int64_t collapses = 0, passes = 0;
+  double worst_aspect_before = 0, worst_aspect_after = 0, seconds = 0;
+};
+
+// mesh: a valid mesh of domain (check_mesh passes) with mesh.faces = its boundary triangles (outward),
+// mesh.face_markers, mesh.tetrahedron_markers; face_facets[i] = the Domain3 facet id (domain.plc.facets index)
+// that boundary triangle i lies on. On return mesh (vertices, tetrahedra, faces, markers) and face_facets
+// describe the coarsened mesh, vertices and tetrahedra renumbered compactly in a deterministic order
+// (the surviving ones in their old order).
+// Throws InvalidInput when face_facets or a marker array has the wrong size or a facet id is out of range.
+ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int>& face_facets,
+                          const ImproveOptions& options);
+
+}  // namespace pqmesh::improve3d

@@ -1,0 +1,36 @@
+#pragma once
+// Helpers of the improve3d tests: the facet of every boundary triangle (which
+// tet_mesh does not return), and one coarsening run with its checks.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "improve3d/improve.hpp"
+#include "mesh/check3d_plane.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/mesh.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::test {
+
+// The facet each boundary triangle lies on, by the checker's rule (all three
+// vertices within an ulp of the facet's plane, exact), among the facets with
+// the triangle's marker; among coplanar candidates the one whose facet
+// triangles hold the centroid (exact orient2d_projected on the rounded
+// centroid), as src/mesh3d/boundary_faces.cpp decides. -1 when none fits.
+std::vector<int> facets_of_faces(const Domain3& domain, const TetMesh3& mesh);
+
+// Quality figures of a mesh for the reports.
+struct MeshFigures {
+  std::int64_t tetrahedra = 0;
+  double worst_aspect = 0, min_dihedral = 0, longest_edge = 0;
+};
+MeshFigures figures(const TetMesh3& mesh);
+
+// Total boundary area per face marker, sorted by marker.
+std::vector<std::pair<int, double>> area_per_marker(const TetMesh3& mesh);
+
+}  // namespace pqmesh::test
