@@ -43,6 +43,21 @@ void bounding_box(const M& mesh, double lo[3], double hi[3]) {
   }
 }
 
+// The $Entities counts of a dim-D mesh with nv vertices: per dimension 0..3
+// the number of entities, and the element entities among them.
+struct EntityCounts {
+  std::size_t per_dim[4] = {0, 0, 0, 0};
+  std::size_t cells = 0;
+};
+inline EntityCounts entity_counts(int dim, const PhysicalGroups& faces, const PhysicalGroups& cells, std::size_t nv) {
+  EntityCounts counts;
+  // The nodes live in element entity 1, which must exist even without elements.
+  counts.cells = std::max<std::size_t>(cells.markers.size(), nv > 0 ? 1 : 0);
+  counts.per_dim[dim - 1] = faces.markers.size();
+  counts.per_dim[dim] = counts.cells;
+  return counts;
+}
+
 // Binary MSH 4.1 (mesh_gmsh_binary.cpp).
 template <class M>
 void write_binary41(const M& mesh, BufferedWriter& out);

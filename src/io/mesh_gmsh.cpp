@@ -80,13 +80,9 @@ void write_body(const M& mesh, BufferedWriter& out, bool v22) {
     // Bounding box shared by every entity.
     double lo[3], hi[3];
     bounding_box(mesh, lo, hi);
-    // The nodes live in element entity 1, which must exist even without elements.
-    const std::size_t num_cell_entities = std::max<std::size_t>(cell_groups.markers.size(), nv > 0 ? 1 : 0);
-    std::size_t counts[4] = {0, 0, 0, 0};
-    counts[D - 1] = face_groups.markers.size();
-    counts[D] = num_cell_entities;
+    const EntityCounts counts = entity_counts(D, face_groups, cell_groups, nv);
     out.put("$Entities\n");
-    for (int d = 0; d < 4; ++d) out.put_int(static_cast<std::int64_t>(counts[d])).put(d < 3 ? ' ' : '\n');
+    for (int d = 0; d < 4; ++d) out.put_int(static_cast<std::int64_t>(counts.per_dim[d])).put(d < 3 ? ' ' : '\n');
     auto put_entity = [&](std::size_t tag, const PhysicalGroups& groups) {
       out.put_int(static_cast<std::int64_t>(tag));
       for (double v : lo) out.put(' ').put_double(v);
@@ -97,7 +93,7 @@ void write_body(const M& mesh, BufferedWriter& out, bool v22) {
         out.put(" 0 0\n");
     };
     for (std::size_t g = 1; g <= face_groups.markers.size(); ++g) put_entity(g, face_groups);
-    for (std::size_t g = 1; g <= num_cell_entities; ++g) put_entity(g, cell_groups);
+    for (std::size_t g = 1; g <= counts.cells; ++g) put_entity(g, cell_groups);
     out.put("$EndEntities\n");
 
     out.put("$Nodes\n");

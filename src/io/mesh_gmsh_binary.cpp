@@ -80,15 +80,11 @@ void write_binary41(const M& mesh, BufferedWriter& out) {
 
   double lo[3], hi[3];
   bounding_box(mesh, lo, hi);
-  // The nodes live in element entity 1, which must exist even without elements.
-  const std::size_t num_cell_entities = std::max<std::size_t>(cell_groups.markers.size(), nv > 0 ? 1 : 0);
-  std::size_t counts[4] = {0, 0, 0, 0};
-  counts[D - 1] = face_groups.markers.size();
-  counts[D] = num_cell_entities;
+  const EntityCounts counts = entity_counts(D, face_groups, cell_groups, nv);
   out.put("$Entities\n");
-  for (std::size_t c : counts) put_size(out, c);
+  for (std::size_t c : counts.per_dim) put_size(out, c);
   for (std::size_t g = 1; g <= face_groups.markers.size(); ++g) put_entity(out, g, face_groups, lo, hi);
-  for (std::size_t g = 1; g <= num_cell_entities; ++g) put_entity(out, g, cell_groups, lo, hi);
+  for (std::size_t g = 1; g <= counts.cells; ++g) put_entity(out, g, cell_groups, lo, hi);
   out.put("\n$EndEntities\n");
 
   out.put("$Nodes\n");
