@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 #include "predicates/predicates.hpp"
 
@@ -41,22 +42,29 @@ bool Collapser::marked(const std::vector<std::uint32_t>& marks, int x) const {
 }
 
 bool Collapser::try_collapse(int u, int v) {
-  u_ = u;
-  v_ = v;
   if (++stamp_ == 0) {  // wrapped: clear every mark so no old mark equals a new stamp
     for (auto* marks : {&near_u_, &ring_, &near_v_, &boundary_near_u_, &boundary_ring_})
       std::fill(marks->begin(), marks->end(), 0);
     stamp_ = 1;
   }
+  // The same edge the other way: the gathered lists swap roles.
+  if (u_tets_.owner == v || v_tets_.owner == u) std::swap(u_tets_, v_tets_);
+  if (u_faces_.owner == v || v_faces_.owner == u) std::swap(u_faces_, v_faces_);
+  u_ = u;
+  v_ = v;
   if (!class_allows()) return refuse(Refusal::Class);
-  if (!split_star()) return refuse(Refusal::NoEdge);
+  if (!split_u()) return refuse(Refusal::NoEdge);
+  if (!moved_positive()) return refuse(Refusal::Orientation);
   if (!one_region()) return refuse(Refusal::Region);
+  split_v();
   if (!link_condition()) return refuse(Refusal::Link);
+  split_faces();
   if (!boundary_allows()) return refuse(Refusal::Boundary);
   if (!within_size()) return refuse(Refusal::Size);
-  if (!moved_positive()) return refuse(Refusal::Orientation);
   if (!quality_allows()) return refuse(Refusal::Quality);
+  list_new_neighbours();
   mesh_.apply({u_, v_, dying_, moving_, new_aspect_, dying_faces_, moving_faces_});
+  for (Gathered* g : {&u_tets_, &v_tets_, &u_faces_, &v_faces_}) g->owner = -1;
   return true;
 }
 
@@ -70,38 +78,54 @@ bool Collapser::class_allows() const {
   return classes_.of(v_) == VertexClass::Input || classes_.same_facets(u_, v_);
 }
 
-// Gathers the tetrahedra and boundary triangles of u and v and splits them;
-// false when no tetrahedron holds both (the edge is gone).
-bool Collapser::split_star() {
-  u_tets_.clear();
+// The live tetrahedra (faces: boundary triangles) of x into g, walked only
+// when g does not hold them yet: a refused collapse changes nothing, so the
+// lists of the edge tried the other way just before are still exact.
+void Collapser::gather_tets(Gathered& g, int x) {
+  if (g.owner == x) return;
+  g.owner = x;
+  g.list.clear();
+  mesh_.tets_of(x, g.list);
+}
+
+void Collapser::gather_faces(Gathered& g, int x) {
+  if (g.owner == x) return;
+  g.owner = x;
+  g.list.clear();
+  mesh_.faces_of(x, g.list);
+}
+
+// The star of u into dying and moving; false when no tetrahedron holds both
+// u and v (the edge is gone).
+bool Collapser::split_u() {
+  gather_tets(u_tets_, u_);
   dying_.clear();
   moving_.clear();
-  mesh_.tets_of(u_, u_tets_);
-  for (const int t : u_tets_) (holds(mesh_.tet(t), v_) ? dying_ : moving_).push_back(t);
-  if (dying_.empty()) return false;
-  v_tets_.clear();
+  for (const int t : u_tets_.list) (holds(mesh_.tet(t), v_) ? dying_ : moving_).push_back(t);
+  return !dying_.empty();
+}
+
+void Collapser::split_v() {
+  gather_tets(v_tets_, v_);
   resting_.clear();
-  mesh_.tets_of(v_, v_tets_);
-  for (const int t : v_tets_)
+  for (const int t : v_tets_.list)
     if (!holds(mesh_.tet(t), u_)) resting_.push_back(t);
-  u_faces_.clear();
-  v_faces_.clear();
-  dying_faces_.clear();
-  moving_faces_.clear();
-  resting_faces_.clear();
-  mesh_.faces_of(u_, u_faces_);
-  mesh_.faces_of(v_, v_faces_);
-  for (const int f : u_faces_) (holds(mesh_.face(f), v_) ? dying_faces_ : moving_faces_).push_back(f);
-  for (const int f : v_faces_)
+}
+
+void Collapser::split_faces() {
+  gather_faces(u_faces_, u_);
+  gather_faces(v_faces_, v_);
+  for (auto* list : {&dying_faces_, &moving_faces_, &resting_faces_}) list->clear();
+  for (const int f : u_faces_.list) (holds(mesh_.face(f), v_) ? dying_faces_ : moving_faces_).push_back(f);
+  for (const int f : v_faces_.list)
     if (!holds(mesh_.face(f), u_)) resting_faces_.push_back(f);
-  return true;
 }
 
 // Tetrahedra keep their region: re-pointing u's tetrahedra to v moves the
 // region boundary unless the star of u lies in one region.
 bool Collapser::one_region() const {
-  const int marker = mesh_.tet_marker(u_tets_.front());
-  return std::all_of(u_tets_.begin(), u_tets_.end(), [&](int t) { return mesh_.tet_marker(t) == marker; });
+  const int marker = mesh_.tet_marker(u_tets_.list.front());
+  return std::all_of(u_tets_.list.begin(), u_tets_.list.end(), [&](int t) { return mesh_.tet_marker(t) == marker; });
 }
 
 bool Collapser::link_condition() { return vertex_links_agree() && edge_links_agree(); }
@@ -110,12 +134,20 @@ bool Collapser::link_condition() { return vertex_links_agree() && edge_links_agr
 // vertex is virtual_vertex_links_agree's.
 bool Collapser::vertex_links_agree() {
   near_u_list_.clear();
-  for (const int t : u_tets_)
+  for (const int t : u_tets_.list)
     for (const int x : mesh_.tet(t))
       if (x != u_ && mark(near_u_, x)) near_u_list_.push_back(x);
-  for (const int t : dying_)
+  ring_edges_.clear();
+  for (const int t : dying_) {
+    std::array<int, 2> edge{};
+    std::size_t n = 0;
     for (const int x : mesh_.tet(t))
-      if (x != u_ && x != v_) mark(ring_, x);
+      if (x != u_ && x != v_) {
+        mark(ring_, x);
+        edge[n++] = x;
+      }
+    ring_edges_.push_back(std::minmax(edge[0], edge[1]));
+  }
   for (const int t : resting_)
     for (const int x : mesh_.tet(t)) {
       if (x == v_ || !mark(near_v_, x)) continue;
@@ -126,19 +158,21 @@ bool Collapser::vertex_links_agree() {
 
 // An edge ab of Lk(u) and of Lk(v) is an edge of Lk(uv): if a moving
 // tetrahedron (u a b .) and a resting one (v a b .) exist, a dying one
-// (u v a b) does. Both ends are then in Lk(u) and Lk(v), hence (after
-// vertex_links_agree) in the ring, which filters the candidates.
+// (u v a b) does, that is ab is a ring edge. Both ends are then in Lk(u) and
+// Lk(v), hence (after vertex_links_agree) in the ring, which filters the
+// candidates; ring edges are looked up first (most candidates are ring edges).
 bool Collapser::edge_links_agree() const {
-  auto some_holds = [&](const std::vector<int>& tets, int a, int b) {
-    return std::any_of(tets.begin(), tets.end(), [&](int t) { return holds(mesh_.tet(t), a) && holds(mesh_.tet(t), b); });
-  };
   for (const int t : resting_) {
     const auto& k = mesh_.tet(t);
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) {
         const int a = k[static_cast<std::size_t>(i)], b = k[static_cast<std::size_t>(j)];
         if (a == v_ || b == v_ || !marked(ring_, a) || !marked(ring_, b)) continue;
-        if (some_holds(moving_, a, b) && !some_holds(dying_, a, b)) return false;
+        if (std::find(ring_edges_.begin(), ring_edges_.end(), std::pair<int, int>(std::minmax(a, b))) != ring_edges_.end())
+          continue;
+        if (std::any_of(moving_.begin(), moving_.end(),
+                        [&](int m) { return holds(mesh_.tet(m), a) && holds(mesh_.tet(m), b); }))
+          return false;
       }
   }
   return true;
@@ -154,9 +188,9 @@ bool Collapser::boundary_allows() {
 // when ux and vx are boundary edges, and then in Lk(uv) only when uvx is a
 // boundary triangle.
 bool Collapser::virtual_vertex_links_agree() {
-  if (u_faces_.empty()) return true;
-  if (!v_faces_.empty() && dying_faces_.empty()) return false;
-  for (const int f : u_faces_)
+  if (u_faces_.list.empty()) return true;
+  if (!v_faces_.list.empty() && dying_faces_.empty()) return false;
+  for (const int f : u_faces_.list)
     for (const int x : mesh_.face(f))
       if (x != u_) mark(boundary_near_u_, x);
   for (const int f : dying_faces_)
@@ -198,11 +232,19 @@ bool Collapser::no_duplicate_face() const {
 // Rule 5: every new edge vx (x a neighbour of u, not of v) within the bound.
 bool Collapser::within_size() const {
   if (!size_.bounded()) return true;
-  for (const int x : near_u_list_) {
-    if (x == v_ || marked(near_v_, x) || marked(ring_, x)) continue;
-    if (!size_.allows(mesh_.point(v_), mesh_.point(x))) return false;
-  }
+  for (const int x : near_u_list_)
+    if (is_new_neighbour(x) && !size_.allows(mesh_.point(v_), mesh_.point(x))) return false;
   return true;
+}
+
+// x becomes a neighbour of v by the collapse (vertex_links_agree has marked
+// the neighbours of u and of v and the ring).
+bool Collapser::is_new_neighbour(int x) const { return x != v_ && !marked(near_v_, x) && !marked(ring_, x); }
+
+void Collapser::list_new_neighbours() {
+  new_neighbours_.clear();
+  for (const int x : near_u_list_)
+    if (is_new_neighbour(x)) new_neighbours_.push_back(x);
 }
 
 std::array<int, 4> Collapser::moved(int t) const {
@@ -227,7 +269,7 @@ bool Collapser::moved_positive() const {
 // of u and v. NaN never passes (the comparisons fail).
 bool Collapser::quality_allows() {
   double old_worst = 0, resting_worst = 0;
-  for (const int t : u_tets_) old_worst = std::max(old_worst, mesh_.aspect(t));
+  for (const int t : u_tets_.list) old_worst = std::max(old_worst, mesh_.aspect(t));
   for (const int t : resting_) resting_worst = std::max(resting_worst, mesh_.aspect(t));
   old_worst = std::max(old_worst, resting_worst);
   const double limit = std::min(limits_.cap, std::max(old_worst, limits_.target));

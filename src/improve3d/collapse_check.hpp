@@ -9,6 +9,7 @@
 // vertices of Lk(uv). Boundary triangles split the same way.
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "improve3d/collapse_mesh.hpp"
@@ -34,12 +35,24 @@ class Collapser {
 
   // Collapses u onto v when every rule holds; returns whether it did.
   bool try_collapse(int u, int v);
+  // After a collapse: the vertices whose stars changed (the neighbours of u,
+  // v among them) and the vertices that became neighbours of v.
+  const std::vector<int>& changed() const { return near_u_list_; }
+  const std::vector<int>& new_neighbours() const { return new_neighbours_; }
   const std::array<std::int64_t, kRefusalKinds>& refusals() const { return refusals_; }
 
  private:
   bool refuse(Refusal why);
+  struct Gathered {
+    int owner = -1;  // the vertex whose elements `list` holds; -1: none
+    std::vector<int> list;
+  };
+  void gather_tets(Gathered& g, int x);
+  void gather_faces(Gathered& g, int x);
   bool class_allows() const;
-  bool split_star();
+  bool split_u();
+  void split_v();
+  void split_faces();
   bool one_region() const;
   bool link_condition();
   bool vertex_links_agree();
@@ -49,6 +62,8 @@ class Collapser {
   bool edge_vertex_moves_along_edge() const;
   bool no_duplicate_face() const;
   bool within_size() const;
+  bool is_new_neighbour(int x) const;
+  void list_new_neighbours();
   bool moved_positive() const;
   bool quality_allows();
   std::array<int, 4> moved(int t) const;
@@ -62,9 +77,11 @@ class Collapser {
   TetrahedronQualityMemo& memo_;
 
   int u_ = -1, v_ = -1;
-  std::vector<int> u_tets_, v_tets_, dying_, moving_, resting_;
-  std::vector<int> u_faces_, v_faces_, dying_faces_, moving_faces_, resting_faces_;
-  std::vector<int> near_u_list_;
+  Gathered u_tets_, v_tets_, u_faces_, v_faces_;
+  std::vector<int> dying_, moving_, resting_;
+  std::vector<int> dying_faces_, moving_faces_, resting_faces_;
+  std::vector<int> near_u_list_, new_neighbours_;
+  std::vector<std::pair<int, int>> ring_edges_;  // the edges of Lk(uv), (smaller, larger)
   std::vector<double> new_aspect_;
   // Marks equal to stamp_ are set in the current try: neighbours of u, ring,
   // neighbours of v, boundary neighbours of u, third vertices of the dying

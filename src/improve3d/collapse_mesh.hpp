@@ -2,13 +2,8 @@
 // The mesh while it is coarsened: flat arrays (docs/DESIGN_RULES.md "Data
 // layout and speed") that a collapse edits in place.
 //
-// Vertex -> tetrahedra adjacency is a singly linked list per vertex threaded
-// through the tetrahedron corners: corner 4 t + i (vertex tets[t][i]) links
-// to the next corner of the same vertex. Likewise boundary triangles, corner
-// 3 f + i. Invariant: the list of a live vertex holds every live element of
-// that vertex exactly once, plus possibly dead elements, which a traversal
-// unlinks as it meets them (so each dead corner costs one step once).
-// Corner ids are int: meshes up to 500 million tetrahedra.
+// Vertex -> tetrahedra and vertex -> boundary triangles adjacency: one
+// segment per vertex (adjacency.hpp). A dead element has vertex -1 first.
 //
 // Element ids never change while collapsing; write_back() renumbers the
 // survivors compactly in their old order (deterministic).
@@ -17,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "improve3d/adjacency.hpp"
 #include "pqmesh/mesh.hpp"
 #include "pqmesh/vec.hpp"
 #include "quality/tetrahedron_quality_memo.hpp"
@@ -60,21 +56,16 @@ class CollapseMesh {
   void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
 
  private:
-  void link_tets();
-  void link_faces();
-
   std::vector<Vec3> points_;
   std::vector<int> vertex_markers_;
   std::vector<std::uint8_t> vertex_alive_;
   std::vector<std::array<int, 4>> tets_;
   std::vector<int> tet_markers_;
   std::vector<double> aspect_;
-  std::vector<std::uint8_t> tet_alive_;
-  std::vector<int> tet_head_, tet_next_;
+  Adjacency tets_of_vertex_;
   std::vector<std::array<int, 3>> faces_;
   std::vector<int> face_markers_, face_facets_;
-  std::vector<std::uint8_t> face_alive_;
-  std::vector<int> face_head_, face_next_;
+  Adjacency faces_of_vertex_;
   bool has_vertex_markers_ = false, has_tet_markers_ = false, has_face_markers_ = false;
   std::int64_t live_tets_ = 0, live_vertices_ = 0;
 };

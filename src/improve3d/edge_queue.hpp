@@ -3,12 +3,10 @@
 // (smaller id, larger id), so the output does not depend on anything but the
 // input (docs/DESIGN_RULES.md "Determinism").
 //
-// A pass starts from every live edge, sorted once; edges created or changed
-// by collapses go to a heap; pop() takes the smaller of the two heads. An
-// entry carries the versions of its two vertices when it was pushed: a
-// vertex's version grows each time it receives a collapse, and then all its
-// edges are pushed anew, so an entry whose versions are not current is stale
-// and the caller skips it.
+// A pass starts from a list of edges, sorted once; edges created by
+// collapses go to a heap; pop() takes the smaller of the two heads. Vertices
+// never move, so an entry's key stays exact; an entry is stale when an end
+// has been deleted, which the caller checks.
 #include <cstddef>
 #include <cstdint>
 #include <queue>
@@ -19,11 +17,10 @@ namespace pqmesh::improve3d::detail {
 struct EdgeEntry {
   double length2 = 0;  // squared length (a construction; equal doubles tie by ids)
   int a = -1, b = -1;  // a < b
-  std::uint32_t version_a = 0, version_b = 0;
 };
 
 // Strict order of the entries: (length2, a, b); equal keys are copies of one
-// edge, and only the current one (if any) is used.
+// edge (tried again, harmlessly).
 inline bool earlier(const EdgeEntry& x, const EdgeEntry& y) {
   if (x.length2 != y.length2) return x.length2 < y.length2;
   if (x.a != y.a) return x.a < y.a;

@@ -25,10 +25,17 @@ using detail::EdgeEntry;
 using detail::EdgeQueue;
 using detail::VertexClass;
 
-// A pass that collapses fewer than this fraction of the live vertices ends
-// the run (only the running time depends on it).
-constexpr double kMinPassYield = 0.002;
+// The run stops after a pass that collapses nothing, or fewer than
+// kMinYield of the edges it tried (later passes retry nearly every edge of
+// the coarsened mesh for a few collapses), or after kMaxPasses. Only the
+// running time and the number of tetrahedra depend on them; every outcome is
+// a valid mesh.
 constexpr int kMaxPasses = 8;
+constexpr double kMinYield = 0.01;
+
+struct PassResult {
+  std::int64_t edges = 0, collapses = 0;
+};
 
 void validate(const Domain3& domain, const TetMesh3& mesh, const std::vector<int>& face_facets,
               const ImproveOptions& options) {
@@ -77,53 +84,79 @@ class Neighbours {
   std::vector<int> tets_, out_;
 };
 
+// The passes. The first tries every edge; a collapse pushes the edges it
+// creates into the running pass. Each refused edge is kept with the time
+// (a count of tries) of its refusal, and each vertex with the time its star
+// last changed (it was in the star of a deleted vertex). A later pass tries
+// again exactly the refused edges with an end changed since the refusal. That
+// loses nothing: whether (a, b) collapses depends only on the stars of a and
+// b (their tetrahedra, boundary triangles and aspect ratios) and the fixed
+// vertex classes, so an edge whose ends' stars have not changed since its
+// refusal is refused again.
 class Coarsener {
  public:
   Coarsener(CollapseMesh& mesh, const detail::VertexClasses& classes, Collapser& collapser)
-      : mesh_(mesh), classes_(classes), collapser_(collapser), neighbours_(mesh.vertex_count()),
-        version_(static_cast<std::size_t>(mesh.vertex_count()), 0) {}
+      : mesh_(mesh), classes_(classes), collapser_(collapser),
+        changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0) {}
 
-  // One pass over every live edge; returns the number of collapses.
-  std::int64_t pass() {
-    queue_.start(all_edges());
-    std::int64_t collapses = 0;
+  PassResult pass() {
+    queue_.start(first_pass_ ? all_edges() : changed_edges());
+    first_pass_ = false;
+    PassResult result;
     while (!queue_.empty()) {
       const EdgeEntry e = queue_.pop();
-      if (!current(e)) continue;
+      if (!mesh_.vertex_alive(e.a) || !mesh_.vertex_alive(e.b)) continue;
+      ++result.edges;
+      ++clock_;
       const int kept = collapse_edge(e.a, e.b);
-      if (kept < 0) continue;
-      ++collapses;
-      ++version_[static_cast<std::size_t>(kept)];
-      push_edges_of(kept);
+      if (kept < 0) {
+        refused_.push_back({e.a, e.b, clock_});
+        continue;
+      }
+      ++result.collapses;
+      for (const int x : collapser_.changed()) changed_at_[static_cast<std::size_t>(x)] = clock_;
+      for (const int x : collapser_.new_neighbours()) queue_.push(entry(kept, x));
     }
-    return collapses;
+    return result;
   }
 
  private:
+  struct Refused {
+    int a = -1, b = -1;
+    std::int64_t at = 0;
+  };
+
   EdgeEntry entry(int a, int b) const {
     if (b < a) std::swap(a, b);
-    return {length2(mesh_, a, b), a, b, version_[static_cast<std::size_t>(a)], version_[static_cast<std::size_t>(b)]};
-  }
-
-  bool current(const EdgeEntry& e) const {
-    return mesh_.vertex_alive(e.a) && mesh_.vertex_alive(e.b) && version_[static_cast<std::size_t>(e.a)] == e.version_a &&
-           version_[static_cast<std::size_t>(e.b)] == e.version_b;
+    return {length2(mesh_, a, b), a, b};
   }
 
   std::vector<EdgeEntry> all_edges() {
+    Neighbours neighbours(mesh_.vertex_count());
     std::vector<EdgeEntry> edges;
     edges.reserve(static_cast<std::size_t>(mesh_.live_tets()) * 6 / 5 + 16);
     for (int a = 0; a < mesh_.vertex_count(); ++a) {
       if (!mesh_.vertex_alive(a)) continue;
-      for (const int b : neighbours_.of(mesh_, a))
+      for (const int b : neighbours.of(mesh_, a))
         if (b > a) edges.push_back(entry(a, b));
     }
     return edges;
   }
 
-  void push_edges_of(int v) {
-    for (const int x : neighbours_.of(mesh_, v))
-      if (x != v) queue_.push(entry(v, x));
+  // The refused edges with both ends alive and an end changed since the
+  // refusal; the others (both ends alive) stay refused.
+  std::vector<EdgeEntry> changed_edges() {
+    std::vector<EdgeEntry> edges;
+    std::size_t kept = 0;
+    for (const Refused& r : refused_) {
+      if (!mesh_.vertex_alive(r.a) || !mesh_.vertex_alive(r.b)) continue;
+      if (changed_at_[static_cast<std::size_t>(r.a)] > r.at || changed_at_[static_cast<std::size_t>(r.b)] > r.at)
+        edges.push_back(entry(r.a, r.b));
+      else
+        refused_[kept++] = r;
+    }
+    refused_.resize(kept);
+    return edges;
   }
 
   // Collapses the edge one way or the other; returns the kept vertex, or -1.
@@ -140,8 +173,10 @@ class Coarsener {
   CollapseMesh& mesh_;
   const detail::VertexClasses& classes_;
   Collapser& collapser_;
-  Neighbours neighbours_;
-  std::vector<std::uint32_t> version_;
+  std::vector<std::int64_t> changed_at_;  // clock_ when the vertex's star last changed
+  std::vector<Refused> refused_;
+  std::int64_t clock_ = 0;  // edges tried so far
+  bool first_pass_ = true;
   EdgeQueue queue_;
 };
 
@@ -163,10 +198,11 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   stats.vertices_before = work.live_vertices();
   stats.worst_aspect_before = work.worst_aspect();
   while (stats.passes < kMaxPasses) {
-    const std::int64_t done = coarsener.pass();
+    const PassResult pass = coarsener.pass();
+    const std::int64_t done = pass.collapses;
     ++stats.passes;
     stats.collapses += done;
-    if (static_cast<double>(done) <= kMinPassYield * static_cast<double>(work.live_vertices())) break;
+    if (static_cast<double>(done) < kMinYield * static_cast<double>(pass.edges) || done == 0) break;
   }
   stats.tetrahedra_after = work.live_tets();
   stats.vertices_after = work.live_vertices();

@@ -23,6 +23,14 @@ namespace pqmesh::test {
 // centroid), as src/mesh3d/boundary_faces.cpp decides. -1 when none fits.
 std::vector<int> facets_of_faces(const Domain3& domain, const TetMesh3& mesh);
 
+// The construction's own mesh: tet_mesh's coarsening (when its options have
+// it) turned off, so the tests here start from the unimproved mesh.
+template <class Options>
+Options construction_only(Options options) {
+  if constexpr (requires { options.improve; }) options.improve = false;
+  return options;
+}
+
 // Quality figures of a mesh for the reports.
 struct MeshFigures {
   std::int64_t tetrahedra = 0;

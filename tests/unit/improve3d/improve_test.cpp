@@ -91,7 +91,7 @@ class CorpusCoarsening : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CorpusCoarsening, ValidFewerTetrahedraWithinTheConstructionsAspect) {
   const Domain3 d = corpus(GetParam());
-  const TetMeshResult r = tet_mesh(d);
+  const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
   ASSERT_TRUE(check_mesh(r.mesh, d).valid());
   expect_coarsened(GetParam(), d, r.mesh);
 }
@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusCoarsening,
 TEST(RandomCoarsening, EveryRunSeedsValidFewerTetrahedraWithinTheConstructionsAspect) {
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
     const Domain3 d = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
-    const TetMeshResult r = tet_mesh(d);
+    const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
     ASSERT_TRUE(check_mesh(r.mesh, d).valid()) << seed;
     expect_coarsened("every-run seed " + std::to_string(seed), d, r.mesh);
   }
@@ -115,7 +115,7 @@ TEST(SizeBoundCoarsening, LongestEdgeWithinTheMaxSizeBound) {
   const Domain3 d = corpus("l_block.poly");
   TetMeshOptions mo;
   mo.max_size = 0.25;
-  const TetMeshResult r = tet_mesh(d, mo);
+  const TetMeshResult r = tet_mesh(d, test::construction_only(mo));
   ImproveOptions o;
   o.max_size = mo.max_size;
   const Coarsened c = expect_coarsened("l_block max 0.25", d, r.mesh, o);
@@ -130,7 +130,7 @@ TEST(SizeBoundCoarsening, SizeFieldPointKeepsEdgesShortNearIt) {
   const Domain3 d = corpus("cube.poly");
   TetMeshOptions mo;
   mo.max_size = 0.125;
-  const TetMeshResult r = tet_mesh(d, mo);
+  const TetMeshResult r = tet_mesh(d, test::construction_only(mo));
   ImproveOptions o;
   o.size_points = {d.bbox_min};
   o.sizes = {0.05};
@@ -150,7 +150,7 @@ TEST(SizeBoundCoarsening, SizeFieldPointKeepsEdgesShortNearIt) {
 // touches a tetrahedron above it, and never makes a tetrahedron above it.
 TEST(QualityCap, NoNewTetrahedronAboveTheCap) {
   const Domain3 d = corpus("cube.poly");
-  const TetMeshResult r = tet_mesh(d);
+  const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
   const std::vector<int> facets = test::facets_of_faces(d, r.mesh);
   ImproveOptions o;
   o.aspect_cap = 4.5;
@@ -167,7 +167,7 @@ TEST(QualityCap, NoNewTetrahedronAboveTheCap) {
 
 TEST(ImproveInput, WrongFaceFacetCountThrows) {
   const Domain3 d = corpus("cube.poly");
-  TetMesh3 mesh = tet_mesh(d).mesh;
+  TetMesh3 mesh = tet_mesh(d, test::construction_only(TetMeshOptions{})).mesh;
   std::vector<int> facets(mesh.faces.size() + 1, 0);
   EXPECT_THROW(improve3d::improve_mesh(d, mesh, facets, {}), InvalidInput);
 }
@@ -177,7 +177,7 @@ TEST(ImprovePerf, DISABLED_MillionTetrahedra) {
   const Domain3 d = corpus("cube.poly");
   TetMeshOptions mo;
   mo.max_size = 0.03 * norm(d.bbox_max - d.bbox_min);
-  const TetMeshResult r = tet_mesh(d, mo);
+  const TetMeshResult r = tet_mesh(d, test::construction_only(mo));
   const std::vector<int> facets = test::facets_of_faces(d, r.mesh);
   ImproveOptions o;
   o.aspect_cap = r.stats.max_aspect;
