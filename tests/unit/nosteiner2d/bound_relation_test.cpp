@@ -19,6 +19,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -62,18 +63,8 @@ double check_one(const Domain2& d, const std::string& what, bool verbose) {
 
 TEST(SteinerFreeBoundRelation, Corpus) {
   Ratios ratios;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"}) {
-    const std::string path = test::data_path(std::string("2d/") + name + ".poly");
-    Domain2 d;
-    try {
-      d = make_domain(read_pslg(path));
-    } catch (const std::exception& ex) {
-      ADD_FAILURE() << path << ": " << ex.what();
-      continue;
-    }
-    ratios.cdt_over_g.push_back(check_one(d, name, true));
-  }
+  test::for_each_corpus_domain(
+      [&](const Domain2& d, const char* name) { ratios.cdt_over_g.push_back(check_one(d, name, true)); });
   ratios.print("data/2d");
 }
 

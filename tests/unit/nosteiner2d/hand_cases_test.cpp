@@ -11,20 +11,14 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "nosteiner2d/stages.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// One counter-clockwise loop as a validated domain.
-Domain2 polygon(const std::vector<Vec2>& pts) {
-  Pslg2 p;
-  p.vertices = pts;
-  const int n = static_cast<int>(pts.size());
-  for (int i = 0; i < n; ++i) p.segments.push_back({i, (i + 1) % n});
-  return make_domain(p);
-}
+using test::polygon;
 
 void expect_valid_cdt(const Domain2& d) {
   const TriMesh2 m = steiner_free_cdt(d);

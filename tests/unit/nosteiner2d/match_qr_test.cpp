@@ -38,6 +38,7 @@
 #include "predicates/predicates.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -135,17 +136,7 @@ TEST(MatchSquares, ElongationLemmasOnRandomSubdivisions) {
   }
 }
 
-Domain2 loops_domain(const std::vector<std::vector<Vec2>>& loops) {
-  Pslg2 p;
-  for (const auto& loop : loops) {
-    const int base = int(p.vertices.size()), m = int(loop.size());
-    for (int j = 0; j < m; ++j) {
-      p.vertices.push_back(loop[std::size_t(j)]);
-      p.segments.push_back({base + j, base + (j + 1) % m});
-    }
-  }
-  return make_domain(std::move(p));
-}
+using test::loops_domain;
 
 // Only the vertices some triangle uses, renumbered.
 TriMesh2 compact(const TriMesh2& in) {
@@ -377,9 +368,8 @@ void print(const Stats& st, const char* what) {
 
 TEST(MatchQR, Corpus) {
   Stats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    run(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st);
+  for (const char* name : test::kCorpus2d)
+    run(test::corpus_domain(name), name, st);
   print(st, "data/2d");
   EXPECT_GT(st.domains, 0);
 }
@@ -390,9 +380,8 @@ TEST(MatchQR, CorpusUnrefinedR) {
   Stats st;
   QuadMeshOptions unrefined;
   unrefined.refine_angle_degrees = 0;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    run(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st, unrefined);
+  for (const char* name : test::kCorpus2d)
+    run(test::corpus_domain(name), name, st, unrefined);
   print(st, "data/2d, R unrefined");
   EXPECT_GT(st.domains, 0);
 }
@@ -405,13 +394,7 @@ TEST(MatchQR, RandomPolygonsWithHoles) {
   EXPECT_GT(st.domains, 0);
 }
 
-Domain2 polygon(const std::vector<Vec2>& pts) {
-  Pslg2 p;
-  p.vertices = pts;
-  const int n = int(pts.size());
-  for (int i = 0; i < n; ++i) p.segments.push_back({i, (i + 1) % n});
-  return make_domain(std::move(p));
-}
+using test::polygon;
 
 // Hard cases: a regular 128-gon (many near-straight Case 2
 // corners), a reflex vertex 1/100 of the edge above its middle, the

@@ -22,6 +22,7 @@
 #include "predicates/predicates.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -88,9 +89,8 @@ void print(const Stats& st, const char* what) {
 
 TEST(PolygonQ, Corpus) {
   Stats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    check_q(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st);
+  for (const char* name : test::kCorpus2d)
+    check_q(test::corpus_domain(name), name, st);
   print(st, "data/2d");
 }
 

@@ -19,6 +19,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -92,10 +93,9 @@ NoSteinerOptions construction_only() {
 // and unchanged, min angle never lower; a second run on a copy of the input
 // gives the identical mesh; and the pipeline with quality_pass on outputs it.
 TEST(QualityPass, ConstructionMeshesOfCorpus) {
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"}) {
+  for (const char* name : test::kCorpus2d) {
     SCOPED_TRACE(name);
-    const Domain2 d = make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly")));
+    const Domain2 d = test::corpus_domain(name);
     NoSteinerOptions o = construction_only();
     const TriMesh2 construction = triangulate_without_boundary_steiner(d, o).mesh;
     TriMesh2 a = construction, b = construction;

@@ -35,6 +35,7 @@
 #include "predicates/predicates.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -116,17 +117,7 @@ class Grid {
   int query_ = 0;
 };
 
-Domain2 loops_domain(const std::vector<std::vector<Vec2>>& loops) {
-  Pslg2 p;
-  for (const auto& loop : loops) {
-    const int base = int(p.vertices.size()), m = int(loop.size());
-    for (int j = 0; j < m; ++j) {
-      p.vertices.push_back(loop[std::size_t(j)]);
-      p.segments.push_back({base + j, base + (j + 1) % m});
-    }
-  }
-  return make_domain(std::move(p));
-}
+using test::loops_domain;
 
 double min_interior_angle(const std::vector<std::vector<Vec2>>& loops) {
   double best = 10;
@@ -310,9 +301,8 @@ void print(const Stats& st, const char* what) {
 
 TEST(ShrinkR, Corpus) {
   Stats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    check_r(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st);
+  for (const char* name : test::kCorpus2d)
+    check_r(test::corpus_domain(name), name, st);
   print(st, "data/2d");
   EXPECT_GT(st.domains, 0);
 }
@@ -323,9 +313,8 @@ TEST(ShrinkR, CorpusUnrefined) {
   Stats st;
   QuadMeshOptions unrefined;
   unrefined.refine_angle_degrees = 0;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    check_r(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st, unrefined);
+  for (const char* name : test::kCorpus2d)
+    check_r(test::corpus_domain(name), name, st, unrefined);
   print(st, "data/2d, refine_angle 0");
   EXPECT_GT(st.domains, 0);
 }

@@ -11,6 +11,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -67,18 +68,7 @@ void check_spirals(const Domain2& d, const std::string& what) {
 }
 
 TEST(SpiralStages, Corpus) {
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"}) {
-    const std::string path = test::data_path(std::string("2d/") + name + ".poly");
-    Domain2 d;
-    try {
-      d = make_domain(read_pslg(path));
-    } catch (const std::exception& ex) {
-      ADD_FAILURE() << path << ": " << ex.what();
-      continue;
-    }
-    check_spirals(d, name);
-  }
+  test::for_each_corpus_domain([](const Domain2& d, const char* name) { check_spirals(d, name); });
 }
 
 TEST(SpiralStages, RandomPolygons) {

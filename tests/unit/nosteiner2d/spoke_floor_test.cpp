@@ -17,6 +17,7 @@
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
 #include "support/random_domains.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -123,9 +124,8 @@ void check_domain(const Domain2& d, Stats& st) {
 
 TEST(SpokeFloor, CorpusAndRandomPolygons) {
   Stats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    check_domain(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), st);
+  for (const char* name : test::kCorpus2d)
+    check_domain(test::corpus_domain(name), st);
   for (std::uint64_t seed = 1; seed <= 300; ++seed) check_domain(make_domain(test::random_polygon_with_holes(seed)), st);
   std::cout << "[spoke floor] " << st.wedges << " wedges, " << st.floored << " floored (" << st.raised
             << " spokes raised), min(new / old wedge min angle) " << st.min_gain << "\n";

@@ -13,6 +13,7 @@
 #include "nosteiner_run.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
+#include "corpus2d.hpp"
 
 namespace pqmesh {
 namespace {
@@ -31,19 +32,8 @@ constexpr double kMeasuredK = 5e-3;
 // stage; asserted in run_and_check).
 constexpr double kMeasuredKPass = 0.05;
 
-Pslg2 loops_pslg(const std::vector<std::vector<Vec2>>& loops) {
-  Pslg2 p;
-  for (const auto& loop : loops) {
-    const int base = int(p.vertices.size()), n = int(loop.size());
-    for (int i = 0; i < n; ++i) {
-      p.vertices.push_back(loop[std::size_t(i)]);
-      p.segments.push_back({base + i, base + (i + 1) % n});
-    }
-  }
-  return p;
-}
-
-Domain2 polygon(const std::vector<Vec2>& pts) { return make_domain(loops_pslg({pts})); }
+using test::loops_pslg;
+using test::polygon;
 
 // The pipeline with the thesis's per-piece fans in Q \ R
 // (NoSteinerOptions::thesis_fans; never above the CDT connectivity by
@@ -78,17 +68,15 @@ void run(const Domain2& d, const std::string& what, test::RunStats& st,
 
 TEST(NoSteinerTriangulation, Corpus) {
   test::RunStats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    run(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st);
+  for (const char* name : test::kCorpus2d)
+    run(test::corpus_domain(name), name, st);
   test::print(st, "data/2d");
 }
 
 TEST(NoSteinerTriangulation, CorpusThesisFans) {
   test::RunStats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    run(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st, fans_options(),
+  for (const char* name : test::kCorpus2d)
+    run(test::corpus_domain(name), name, st, fans_options(),
         kMeasuredKFans);
   test::print(st, "data/2d, thesis fans in Q \\ R");
 }
@@ -97,9 +85,8 @@ TEST(NoSteinerTriangulation, CorpusThesisFans) {
 // no boundary Steiner point, never below the CDT of P (by construction).
 TEST(NoSteinerTriangulation, CorpusDefaultOptions) {
   test::RunStats st;
-  for (const char* name :
-       {"square", "l_shape", "comb", "spike_1deg", "spike_5deg", "spike_10deg", "square_holes", "regions"})
-    test::run_and_check(make_domain(read_pslg(test::data_path(std::string("2d/") + name + ".poly"))), name, st,
+  for (const char* name : test::kCorpus2d)
+    test::run_and_check(test::corpus_domain(name), name, st,
                         NoSteinerOptions{});
   test::print(st, "data/2d, default options");
 }
