@@ -67,6 +67,37 @@ bool is_nested(py::handle item) {
   return py::isinstance<py::sequence>(first) && !py::isinstance<py::str>(first);
 }
 
+// The point whose coordinates start at p.
+Vec2 vec2_at(const double* p) { return {p[0], p[1]}; }
+Vec3 vec3_at(const double* p) { return {p[0], p[1], p[2]}; }
+
+// An (N, dim) array of numbers, each row made a point by `point`.
+template <class Point>
+std::vector<Point> points(py::handle obj, const char* name, int dim, Point (*point)(const double*)) {
+  const py::array a = checked(obj, name, "iuf", 2, dim, dim);
+  std::vector<Point> out;
+  if (a.size() == 0) return out;
+  const DoubleArray d = DoubleArray::ensure(a);  // a converted copy must outlive the proxy
+  out.reserve(static_cast<std::size_t>(d.shape(0)));
+  for (py::ssize_t i = 0; i < d.shape(0); ++i) out.push_back(point(d.data(i, 0)));
+  return out;
+}
+
+// A 1-D array with dtype kind in `kinds`, entry i converted by convert(value, i); its length must be expected_size.
+template <class T, class Array, class Convert>
+std::vector<T> entries(py::handle obj, const char* name, const char* kinds, std::size_t expected_size,
+                       Convert convert) {
+  const py::array a = checked(obj, name, kinds, 1);
+  std::vector<T> out;
+  if (a.size() > 0) {
+    const Array d = Array::ensure(a);
+    const auto r = d.template unchecked<1>();
+    for (py::ssize_t i = 0; i < r.shape(0); ++i) out.push_back(convert(r(i), i));
+  }
+  check_size(out.size(), expected_size, name);
+  return out;
+}
+
 template <class Region, class Point>
 std::vector<Region> regions(py::handle obj, int dim, Point (*point)(const double*)) {
   const py::array a = checked(obj, "regions", "iuf", 2, dim + 1, dim + 2);
@@ -92,50 +123,17 @@ py::array make_view(const T* data, std::vector<py::ssize_t> shape, py::handle ow
 
 }  // namespace
 
-std::vector<Vec2> to_points2(py::handle obj, const char* name) {
-  const py::array a = checked(obj, name, "iuf", 2, 2, 2);
-  std::vector<Vec2> out;
-  if (a.size() == 0) return out;
-  const DoubleArray d = DoubleArray::ensure(a);  // a converted copy must outlive the proxy
-  const auto r = d.unchecked<2>();
-  out.reserve(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t i = 0; i < r.shape(0); ++i) out.push_back({r(i, 0), r(i, 1)});
-  return out;
-}
+std::vector<Vec2> to_points2(py::handle obj, const char* name) { return points<Vec2>(obj, name, 2, vec2_at); }
 
-std::vector<Vec3> to_points3(py::handle obj, const char* name) {
-  const py::array a = checked(obj, name, "iuf", 2, 3, 3);
-  std::vector<Vec3> out;
-  if (a.size() == 0) return out;
-  const DoubleArray d = DoubleArray::ensure(a);
-  const auto r = d.unchecked<2>();
-  out.reserve(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t i = 0; i < r.shape(0); ++i) out.push_back({r(i, 0), r(i, 1), r(i, 2)});
-  return out;
-}
+std::vector<Vec3> to_points3(py::handle obj, const char* name) { return points<Vec3>(obj, name, 3, vec3_at); }
 
 std::vector<double> to_doubles(py::handle obj, const char* name, std::size_t expected_size) {
-  const py::array a = checked(obj, name, "iuf", 1);
-  std::vector<double> out;
-  if (a.size() > 0) {
-    const DoubleArray d = DoubleArray::ensure(a);
-    const auto r = d.unchecked<1>();
-    for (py::ssize_t i = 0; i < r.shape(0); ++i) out.push_back(r(i));
-  }
-  check_size(out.size(), expected_size, name);
-  return out;
+  return entries<double, DoubleArray>(obj, name, "iuf", expected_size, [](double v, py::ssize_t) { return v; });
 }
 
 std::vector<int> to_ints(py::handle obj, const char* name, std::size_t expected_size) {
-  const py::array a = checked(obj, name, "iu", 1);
-  std::vector<int> out;
-  if (a.size() > 0) {
-    const Int64Array d = Int64Array::ensure(a);
-    const auto r = d.unchecked<1>();
-    for (py::ssize_t i = 0; i < r.shape(0); ++i) out.push_back(to_int(r(i), name, i));
-  }
-  check_size(out.size(), expected_size, name);
-  return out;
+  return entries<int, Int64Array>(obj, name, "iu", expected_size,
+                                  [&](std::int64_t v, py::ssize_t i) { return to_int(v, name, i); });
 }
 
 template <std::size_t K>
@@ -180,11 +178,11 @@ std::vector<Facet3> to_facets(py::handle obj) {
 }
 
 std::vector<Region2> to_regions2(py::handle obj) {
-  return regions<Region2, Vec2>(obj, 2, [](const double* p) { return Vec2{p[0], p[1]}; });
+  return regions<Region2, Vec2>(obj, 2, vec2_at);
 }
 
 std::vector<Region3> to_regions3(py::handle obj) {
-  return regions<Region3, Vec3>(obj, 3, [](const double* p) { return Vec3{p[0], p[1], p[2]}; });
+  return regions<Region3, Vec3>(obj, 3, vec3_at);
 }
 
 py::array view(const double* data, std::vector<py::ssize_t> shape, py::handle owner) {

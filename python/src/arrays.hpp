@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "pqmesh/plc.hpp"
@@ -47,6 +48,19 @@ std::vector<Facet3> to_facets(py::handle obj);
 // Regions: rows (x, y[, z], attribute[, max size]).
 std::vector<Region2> to_regions2(py::handle obj);
 std::vector<Region3> to_regions3(py::handle obj);
+
+// A size field: a file name (read by `read`, e.g. read_size_field2) or a pair
+// (points, sizes) whose points `points` converts (to_points2 / to_points3).
+template <class Field, class Points>
+Field to_size_field(py::handle obj, Field (*read)(const std::string&), Points (*points)(py::handle, const char*)) {
+  if (py::isinstance<py::str>(obj)) return read(obj.cast<std::string>());
+  if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
+    throw py::value_error("size_field must be a file name or a pair (points, sizes)");
+  Field field;
+  field.points = points(obj[py::int_(0)], "size_field points");
+  field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());
+  return field;
+}
 
 // A read-only numpy array of shape `shape` over `data`, kept alive by `owner`
 // (the Python object that owns the vector). Scalars are double or int.

@@ -1,7 +1,6 @@
 // The two 2D meshers as `pqmesh mesh` runs them (cmd_mesh.cpp and, with
 // --no-boundary-steiner, cmd_mesh_nosteiner.cpp), with the GIL released; the
 // figures of the CLI's summary become attributes of the returned TriMesh.
-#include <chrono>
 #include <memory>
 #include <string>
 
@@ -12,22 +11,12 @@
 #include "pqmesh/quadmesh.hpp"
 #include "pqmesh/quadmesh_bound.hpp"
 #include "pqmesh/quality.hpp"
+#include "timed.hpp"
 
 namespace pqmesh::python {
 namespace {
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-
-// A size-field file (read_size_field2: "x y size" lines) or a pair (points (K, 2), sizes (K,)).
-SizeField2 size_field2(py::handle obj) {
-  if (py::isinstance<py::str>(obj)) return read_size_field2(obj.cast<std::string>());
-  if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
-    throw py::value_error("size_field must be a file name or a pair (points, sizes)");
-  SizeField2 field;
-  field.points = to_points2(obj[py::int_(0)], "size_field points");
-  field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());
-  return field;
-}
 
 py::dict quad_stats(const QuadMeshStats& s) {
   return py::dict(py::arg("leaves") = s.leaves, py::arg("duplicates") = s.duplicates,
@@ -50,16 +39,15 @@ py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py
   options.refine_angle_degrees = refine_angle;
   options.protect_edges = protect_edges;
   options.quadtree = quadtree;
-  if (!size_field.is_none()) options.size_field = size_field2(size_field);
+  // A size-field file (read_size_field2: "x y size" lines) or a pair (points (K, 2), sizes (K,)).
+  if (!size_field.is_none()) options.size_field = to_size_field(size_field, read_size_field2, to_points2);
   QuadMeshResult result;
   AlphaResult alpha;
   QualityReport quality;
   double seconds = 0;
   {
     py::gil_scoped_release release;
-    const auto start = std::chrono::steady_clock::now();
-    result = mesh_polygon(*domain, options);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    seconds = seconds_of([&] { result = mesh_polygon(*domain, options); });
     alpha = compute_alpha(domain->pslg.vertices, domain->loops);
     quality = quality_report(result.mesh);
   }

@@ -1,7 +1,6 @@
 // tet_mesh as `pqmesh mesh` runs it on a 3D domain (cmd_mesh3.cpp): the mesh,
 // then alpha and the quality figures of the CLI's summary, all computed with
 // the GIL released. The figures become attributes of the returned TetMesh.
-#include <chrono>
 #include <memory>
 
 #include "arrays.hpp"
@@ -9,21 +8,10 @@
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/quality.hpp"
 #include "pqmesh/tetmesh.hpp"
+#include "timed.hpp"
 
 namespace pqmesh::python {
 namespace {
-
-// A size-field file (read_size_field3: "x y z size" lines) or a pair (points
-// (K, 3), sizes (K,)): the size asked for at x is min_i sizes[i] + |x - points[i]|.
-TetSizeField size_field3(py::handle obj) {
-  if (py::isinstance<py::str>(obj)) return read_size_field3(obj.cast<std::string>());
-  if (!py::isinstance<py::sequence>(obj) || py::len(obj) != 2)
-    throw py::value_error("size_field must be a file name or a pair (points, sizes)");
-  TetSizeField field;
-  field.points = to_points3(obj[py::int_(0)], "size_field points");
-  field.sizes = to_doubles(obj[py::int_(1)], "size_field sizes", field.points.size());
-  return field;
-}
 
 py::dict stats_dict(const TetMeshStats& s) {
   py::dict per_kind;
@@ -50,16 +38,16 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
   options.max_size = max_size;
   options.generic_grid = generic_grid;
   options.warp = warp;
-  if (!size_field.is_none()) options.size_field = size_field3(size_field);
+  // A size-field file (read_size_field3: "x y z size" lines) or a pair (points
+  // (K, 3), sizes (K,)): the size asked for at x is min_i sizes[i] + |x - points[i]|.
+  if (!size_field.is_none()) options.size_field = to_size_field(size_field, read_size_field3, to_points3);
   TetMeshResult result;
   AlphaResult alpha;
   QualityReport quality;
   double seconds = 0;
   {
     py::gil_scoped_release release;
-    const auto start = std::chrono::steady_clock::now();
-    result = tet_mesh(*domain, options);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    seconds = seconds_of([&] { result = tet_mesh(*domain, options); });
     alpha = compute_alpha(domain->plc);
     quality = quality_report(result.mesh);
   }
