@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from client_checks import check, exit_code
+
 try:
     import meshio
     import numpy as np
@@ -34,14 +36,6 @@ CUBE = dict(points=8, cell="tetra", cells=6, face="triangle", faces=12,
             cell_markers=[1, 2, 3, 0, -5, 2], face_markers=sorted([1, 2, 3, 4, 5, 6] * 2),
             vertex_markers=[i % 3 for i in range(8)],
             physical={1: 1, 2: 2, 3: 3, 0: 4, -5: 9})
-
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def cells_of(mesh, cell_type):
@@ -165,11 +159,7 @@ def main():
                 check(counts[0] == spec["points"] and counts[1] == spec["cells"] and counts[2] == expected_faces,
                       f"pqmesh read {counts} from meshio's {target} ({kwargs}), expected "
                       f"{[spec['points'], spec['cells'], expected_faces]}")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    print("all meshio checks passed")
-    return 0
+    return exit_code("meshio")
 
 
 if __name__ == "__main__":

@@ -26,6 +26,8 @@ import subprocess
 import sys
 import tempfile
 
+from client_checks import check, exit_code
+
 try:
     import meshio
     import numpy as np
@@ -41,15 +43,6 @@ CORPUS = [("2d/" + name, 2) for name in ("comb.poly", "l_shape.poly", "regions.p
 CORPUS += [("3d/" + name, 3) for name in ("cube.poly", "l_block.poly", "schoenhardt.poly", "box_with_hole.stl",
                                           "channel_patches.poly")]
 REWRITTEN = ("2d/regions.poly", "3d/l_block.poly")
-
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-    return condition
 
 
 def run(args):
@@ -249,11 +242,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         check_corpus(pqmesh, read_exe, data, tmp)
         check_rewritten(read_exe, tmp)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    print("all .vtu client checks passed")
-    return 0
+    return exit_code(".vtu client")
 
 
 if __name__ == "__main__":
