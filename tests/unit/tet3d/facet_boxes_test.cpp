@@ -124,17 +124,7 @@ TEST_P(FacetBoxes, HalfSpaceThroughRandomTreesIsMeshedConformingly) {
     if (trial % 2 == 0) t.balance_all();
     const std::vector<std::int32_t> leaves = t.leaves();
     const CornerSet corners(t, leaves);
-    std::vector<BoxJob> jobs;
-    for (const std::int32_t leaf : leaves) {
-      bool in = false, out = false;
-      for (int k = 0; k < 8; ++k) {
-        const Sign s = plane.side(grid_coordinates(t, key_corner(t.key(leaf), k)));
-        in = in || s == Sign::Negative;
-        out = out || s == Sign::Positive;
-      }
-      if (in && !out) jobs.push_back({leaf, -1});
-      if (in && out) jobs.push_back({leaf, half.facet});
-    }
+    const std::vector<BoxJob> jobs = half_space_jobs(t, leaves, plane, half.facet);
     BoxMeshOptions opt;
     opt.warp = warp;
     const BoxMesh m = mesh_boxes(t, corners, dom, jobs, opt);

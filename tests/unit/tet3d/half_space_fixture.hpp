@@ -5,10 +5,15 @@
 // side around o. `e1` is a direction in F (nonzero, orthogonal to n).
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 #include "pqmesh/vec.hpp"
+#include "tet3d/facet_boxes.hpp"
+#include "tet3d/facet_plane.hpp"
+#include "tet3d/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 
@@ -35,6 +40,24 @@ inline HalfSpaceDomain half_space_domain(Vec3 o, Vec3 n, Vec3 e1) {
     if (std::find(loop.begin(), loop.end(), 3) == loop.end()) out.facet = static_cast<int>(f);
   }
   return out;
+}
+
+// The jobs of the leaves with a corner on F's negative side: without a facet
+// when no corner is on its positive side, with `facet` (F's index) otherwise.
+inline std::vector<BoxJob> half_space_jobs(const OctTree& t, const std::vector<std::int32_t>& leaves,
+                                           const FacetPlane& plane, int facet) {
+  std::vector<BoxJob> jobs;
+  for (const std::int32_t leaf : leaves) {
+    bool in = false, out = false;
+    for (int k = 0; k < 8; ++k) {
+      const Sign s = plane.side(grid_coordinates(t, key_corner(t.key(leaf), k)));
+      in = in || s == Sign::Negative;
+      out = out || s == Sign::Positive;
+    }
+    if (in && !out) jobs.push_back({leaf, -1});
+    if (in && out) jobs.push_back({leaf, facet});
+  }
+  return jobs;
 }
 
 }  // namespace pqmesh::tet3d
