@@ -19,11 +19,10 @@
 #include "tet3d/grid_point.hpp"
 #include "tet3d/warp.hpp"
 #include "tree/tree.hpp"
+#include "warp_test_util.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
-
-GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
 
 // Root cube [0, 1]^3 (h = 1). P: the prism (y in [-1, 2]) over the polygon
 // e = (1/64, 1/2), g1 = (1/2, 2), (-2, 2), (-2, -1), f1 = (1/2, -1) (x, z),
@@ -51,11 +50,7 @@ TEST(WarpFaceFraction, TranslationStopsShortOfEdgeLine) {
   for (Vec3& v : plc.vertices) v.x -= v.y / 16;
   const Domain3 d = make_domain(plc);
   const int f = 4, g = 0;
-  int edge = -1;
-  for (std::size_t e = 0; e < d.edges.size(); ++e) {
-    const auto& fs = d.edges[e].facets;
-    if ((fs[0] == f && fs[1] == g) || (fs[0] == g && fs[1] == f)) edge = static_cast<int>(e);
-  }
+  const int edge = edge_between(d, f, g);
   ASSERT_GE(edge, 0);
   const GridPoint c000 = corner_of(t, 0), c010 = corner_of(t, 2), c001 = corner_of(t, 4), c011 = corner_of(t, 6);
   const std::vector<WarpCandidateRecord> cand = {

@@ -15,11 +15,10 @@
 #include "tet3d/grid_point.hpp"
 #include "tet3d/warp.hpp"
 #include "tree/tree.hpp"
+#include "warp_test_util.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
-
-GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
 
 TEST(WarpLineMove, CornerNearFMovesAlongItsCrossedSegment) {
   // Root cube [0, 1]^3, h = 1; v = (0, 0, 0) with ring neighbours (1, 0, 0),

@@ -22,6 +22,7 @@
 #include "tet3d/warp.hpp"
 #include "tet3d/warped_crossing.hpp"
 #include "tree/tree.hpp"
+#include "warp_test_util.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
@@ -33,8 +34,6 @@ FaceSquare bottom_square(const OctTree& t, const CornerSet& corners) {
   EXPECT_EQ(s.size(), 1u);
   return s.at(0);
 }
-
-GridPoint corner_of(const OctTree& t, int k) { return key_corner(t.key(0), k); }
 
 // Candidates: the four corners of the bottom face (ring neighbours along the
 // square) with every facet, and the square's centre.
