@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "mv3d/leaf_kind.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/domain.hpp"
@@ -26,28 +27,7 @@ namespace pqmesh::mv3d::octest {
 // (vertices: the polygon at z = 0, then at z = depth; facets: bottom, top,
 // then side i from polygon vertex i to i + 1, the layout of
 // data/generate_corpus.py's prism()).
-inline Plc3 extrude(const std::vector<Vec2>& poly, double depth) {
-  const int n = static_cast<int>(poly.size());
-  Plc3 plc;
-  for (const double z : {0.0, depth})
-    for (const Vec2& p : poly) plc.vertices.push_back({p.x, p.y, z});
-  Facet3 bottom, top;
-  bottom.loops.emplace_back();
-  top.loops.emplace_back();
-  for (int i = 0; i < n; ++i) {
-    bottom.loops[0].push_back(n - 1 - i);
-    top.loops[0].push_back(n + i);
-  }
-  plc.facets.push_back(bottom);
-  plc.facets.push_back(top);
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    Facet3 side;
-    side.loops.push_back({i, j, n + j, n + i});
-    plc.facets.push_back(side);
-  }
-  return plc;
-}
+inline Plc3 extrude(const std::vector<Vec2>& poly, double depth) { return test::prism(poly, 0, depth); }
 
 // The tuning fork of the geodesic tests (octree and tet mesh): the
 // plate [0,1]^2 x [0,1/4] minus the square cavity [1/4,3/4]^2 and a neck of

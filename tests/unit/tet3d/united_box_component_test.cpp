@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../plc/domain_fixtures.hpp"
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
@@ -31,25 +32,7 @@ namespace {
 // a shorter slot).
 Plc3 slot_prism(double w, double depth) {
   const double a = 0.5 - w / 2, b = 0.5 + w / 2;
-  const std::vector<Vec2> poly{{0, 0}, {1, 0}, {1, 1}, {b, 1}, {b, 0.5}, {a, 0.5}, {a, 1}, {0, 1}};
-  const int n = static_cast<int>(poly.size());
-  Plc3 plc;
-  for (const double z : {0.0, depth})
-    for (const Vec2& p : poly) plc.vertices.push_back({p.x, p.y, z});
-  Facet3 bottom, top;
-  bottom.loops.emplace_back();
-  top.loops.emplace_back();
-  for (int i = 0; i < n; ++i) {
-    bottom.loops[0].push_back(n - 1 - i);
-    top.loops[0].push_back(n + i);
-  }
-  plc.facets = {bottom, top};
-  for (int i = 0; i < n; ++i) {
-    Facet3 side;
-    side.loops.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
-    plc.facets.push_back(side);
-  }
-  return plc;
+  return test::prism({{0, 0}, {1, 0}, {1, 1}, {b, 1}, {b, 0.5}, {a, 0.5}, {a, 1}, {0, 1}}, depth);
 }
 
 // Leaves meeting P inside a united box that are not its pieces (counted
