@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "plc/lfs_distance.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/vec.hpp"
 
@@ -22,26 +23,6 @@ struct LfsFeature {
 inline bool lfs_disjoint(const LfsFeature& f, const LfsFeature& g) {
   const bool shares = f.a == g.a || (g.b >= 0 && f.a == g.b) || (f.b >= 0 && (f.b == g.a || f.b == g.b));
   return !shares;
-}
-
-// Squared distance from x to the point p (a construction).
-inline double lfs_dist2_point(Vec2 x, Vec2 p) {
-  const Vec2 d = x - p;
-  return dot(d, d);
-}
-
-// Squared distance from x to the closed segment ab (a construction). The
-// clamped cases return exactly lfs_dist2_point of the endpoint, so a vertex
-// and its incident edges give the same value when the endpoint is nearest,
-// and 0 when x is the endpoint.
-inline double lfs_dist2_segment(Vec2 x, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a, ax = x - a;
-  const double t = dot(ax, ab);
-  if (t <= 0) return dot(ax, ax);
-  const double l = dot(ab, ab);
-  if (t >= l) return lfs_dist2_point(x, b);
-  const double c = cross(ab, ax);
-  return (c * c) / l;
 }
 
 inline double lfs_dist2(Vec2 x, const LfsFeature& f, const std::vector<Vec2>& points) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "plc/lfs_distance.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/vec.hpp"
 
@@ -17,24 +18,6 @@ namespace pqmesh::detail {
 // Small helpers shared by lfs3d*.cpp.
 inline constexpr double kLfsInf = std::numeric_limits<double>::infinity();
 inline std::size_t lfs_uz(int i) { return static_cast<std::size_t>(i); }
-
-// Squared distance from x to the point p (a construction).
-inline double lfs_dist2_point(Vec3 x, Vec3 p) {
-  const Vec3 d = x - p;
-  return dot(d, d);
-}
-
-// Squared distance from x to the closed segment ab. The clamped cases return
-// exactly lfs_dist2_point of the endpoint (0 when x is the endpoint).
-inline double lfs_dist2_segment(Vec3 x, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a, ax = x - a;
-  const double t = dot(ax, ab);
-  if (t <= 0) return dot(ax, ax);
-  const double l = dot(ab, ab);
-  if (t >= l) return lfs_dist2_point(x, b);
-  const Vec3 c = cross(ab, ax);
-  return dot(c, c) / l;
-}
 
 // Squared distance from x to the closed, non-degenerate triangle abc whose
 // plane has the unit normal n (the facet's normal, oriented so that
