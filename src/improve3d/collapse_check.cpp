@@ -26,6 +26,7 @@ Collapser::Collapser(CollapseMesh& mesh, const VertexClasses& classes, const Siz
 
 bool Collapser::refuse(Refusal why) {
   ++refusals_[static_cast<std::size_t>(why)];
+  last_refusal_ = why;
   return false;
 }
 
@@ -124,6 +125,7 @@ void Collapser::split_faces() {
 // Tetrahedra keep their region: re-pointing u's tetrahedra to v moves the
 // region boundary unless the star of u lies in one region.
 bool Collapser::one_region() const {
+  if (mesh_.one_region()) return true;
   const int marker = mesh_.tet_marker(u_tets_.list.front());
   return std::all_of(u_tets_.list.begin(), u_tets_.list.end(), [&](int t) { return mesh_.tet_marker(t) == marker; });
 }
@@ -163,19 +165,23 @@ bool Collapser::vertex_links_agree() {
 // candidates; ring edges are looked up first (most candidates are ring edges).
 bool Collapser::edge_links_agree() const {
   for (const int t : resting_) {
-    const auto& k = mesh_.tet(t);
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const int a = k[static_cast<std::size_t>(i)], b = k[static_cast<std::size_t>(j)];
-        if (a == v_ || b == v_ || !marked(ring_, a) || !marked(ring_, b)) continue;
-        if (std::find(ring_edges_.begin(), ring_edges_.end(), std::pair<int, int>(std::minmax(a, b))) != ring_edges_.end())
-          continue;
-        if (std::any_of(moving_.begin(), moving_.end(),
-                        [&](int m) { return holds(mesh_.tet(m), a) && holds(mesh_.tet(m), b); }))
-          return false;
-      }
+    std::array<int, 3> in_ring{};
+    std::size_t n = 0;
+    for (const int x : mesh_.tet(t))
+      if (x != v_ && marked(ring_, x)) in_ring[n++] = x;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (!ring_edge_or_outside_lk_u(in_ring[i], in_ring[j])) return false;
   }
   return true;
+}
+
+// ab is a ring edge, or no moving tetrahedron holds a and b.
+bool Collapser::ring_edge_or_outside_lk_u(int a, int b) const {
+  if (std::find(ring_edges_.begin(), ring_edges_.end(), std::pair<int, int>(std::minmax(a, b))) != ring_edges_.end())
+    return true;
+  return std::none_of(moving_.begin(), moving_.end(),
+                      [&](int m) { return holds(mesh_.tet(m), a) && holds(mesh_.tet(m), b); });
 }
 
 bool Collapser::boundary_allows() {

@@ -35,6 +35,9 @@ class Collapser {
 
   // Collapses u onto v when every rule holds; returns whether it did.
   bool try_collapse(int u, int v);
+  // The last refusal holds for the edge either way round (the link
+  // condition is symmetric in u and v; a missing edge is missing both ways).
+  bool refused_both_ways() const { return last_refusal_ == Refusal::NoEdge || last_refusal_ == Refusal::Link; }
   // After a collapse: the vertices whose stars changed (the neighbours of u,
   // v among them) and the vertices that became neighbours of v.
   const std::vector<int>& changed() const { return near_u_list_; }
@@ -57,6 +60,7 @@ class Collapser {
   bool link_condition();
   bool vertex_links_agree();
   bool edge_links_agree() const;
+  bool ring_edge_or_outside_lk_u(int a, int b) const;
   bool boundary_allows();
   bool virtual_vertex_links_agree();
   bool edge_vertex_moves_along_edge() const;
@@ -89,6 +93,7 @@ class Collapser {
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> near_u_, ring_, near_v_, boundary_near_u_, boundary_ring_;
   std::array<std::int64_t, kRefusalKinds> refusals_{};
+  Refusal last_refusal_ = Refusal::Class;
 };
 
 }  // namespace pqmesh::improve3d::detail

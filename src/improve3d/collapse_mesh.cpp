@@ -37,6 +37,7 @@ CollapseMesh::CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facet
       live_vertices_(static_cast<std::int64_t>(mesh.vertices.size())) {
   tets_of_vertex_.build(tets_, points_.size());
   faces_of_vertex_.build(faces_, points_.size());
+  one_region_ = std::all_of(tet_markers_.begin(), tet_markers_.end(), [&](int m) { return m == tet_markers_.front(); });
   aspect_.resize(tets_.size());
   for (std::size_t t = 0; t < tets_.size(); ++t) {
     const auto& k = tets_[t];

@@ -29,6 +29,7 @@ class CollapseMesh {
   const Vec3& point(int v) const { return points_[static_cast<std::size_t>(v)]; }
   const std::array<int, 4>& tet(int t) const { return tets_[static_cast<std::size_t>(t)]; }
   int tet_marker(int t) const { return tet_markers_[static_cast<std::size_t>(t)]; }
+  bool one_region() const { return one_region_; }  // every tetrahedron has the same marker
   double aspect(int t) const { return aspect_[static_cast<std::size_t>(t)]; }
   const std::array<int, 3>& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
   int face_facet(int f) const { return face_facets_[static_cast<std::size_t>(f)]; }
@@ -66,6 +67,7 @@ class CollapseMesh {
   std::vector<std::array<int, 3>> faces_;
   std::vector<int> face_markers_, face_facets_;
   Adjacency faces_of_vertex_;
+  bool one_region_ = true;
   bool has_vertex_markers_ = false, has_tet_markers_ = false, has_face_markers_ = false;
   std::int64_t live_tets_ = 0, live_vertices_ = 0;
 };

@@ -7,7 +7,7 @@ namespace pqmesh::improve3d::detail {
 
 void EdgeQueue::start(std::vector<EdgeEntry> entries) {
   sorted_ = std::move(entries);
-  std::sort(sorted_.begin(), sorted_.end(), earlier);
+  std::sort(sorted_.begin(), sorted_.end(), [](const EdgeEntry& x, const EdgeEntry& y) { return earlier(x, y); });
   next_ = 0;
   heap_ = {};
 }

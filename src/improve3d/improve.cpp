@@ -31,7 +31,7 @@ using detail::VertexClass;
 // running time and the number of tetrahedra depend on them; every outcome is
 // a valid mesh.
 constexpr int kMaxPasses = 8;
-constexpr double kMinYield = 0.01;
+constexpr double kMinYield = 0.02;
 
 struct PassResult {
   std::int64_t edges = 0, collapses = 0;
@@ -166,7 +166,7 @@ class Coarsener {
     const bool b_first = classes_.of(b) < classes_.of(a);
     const int first = b_first ? b : a, second = b_first ? a : b;
     if (collapser_.try_collapse(first, second)) return second;
-    if (collapser_.try_collapse(second, first)) return first;
+    if (!collapser_.refused_both_ways() && collapser_.try_collapse(second, first)) return first;
     return -1;
   }
 
