@@ -79,6 +79,21 @@ TEST(CdtConstraints, StarPolygonSidesAmongRandomPoints) {
   EXPECT_GE(checked, 25);
 }
 
+// Draws `tries` random pairs of distinct points of `in` and adds each as a
+// constraint when it crosses no constraint already there properly.
+void add_greedy_segments(CdtInput& in, std::mt19937_64& rng, int tries) {
+  const int n = static_cast<int>(in.points.size());
+  for (int k = 0; k < tries; ++k) {
+    const int a = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
+    const int b = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
+    if (a == b) continue;
+    bool ok = true;
+    for (const auto& c : in.constraints)
+      if (cross_properly(in.points[a], in.points[b], in.points[c[0]], in.points[c[1]])) ok = false;
+    if (ok) in.constraints.push_back({a, b});
+  }
+}
+
 // Grid points (cocircular everywhere) with random segments between grid
 // points, accepted greedily unless they cross an accepted one properly.
 // Accepted segments may overlap collinearly, end in the middle of another
@@ -91,16 +106,7 @@ TEST(CdtConstraints, GreedyRandomSegmentsOnGrid) {
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j) in.points.push_back({0.25 * i, 0.25 * j});
     std::shuffle(in.points.begin(), in.points.end(), rng);
-    const int n = static_cast<int>(in.points.size());
-    for (int tries = 0; tries < 60; ++tries) {
-      const int a = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-      const int b = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-      if (a == b) continue;
-      bool ok = true;
-      for (const auto& c : in.constraints)
-        if (cross_properly(in.points[a], in.points[b], in.points[c[0]], in.points[c[1]])) ok = false;
-      if (ok) in.constraints.push_back({a, b});
-    }
+    add_greedy_segments(in, rng, 60);
     ASSERT_GE(in.constraints.size(), 5u);
     expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
                "grid segments seed " + std::to_string(seed));
@@ -113,16 +119,7 @@ TEST(CdtConstraints, GreedyRandomSegmentsAmongRandomPoints) {
     CdtInput in;
     in.points = random_points(seed + 1000, 1500);
     sort_z_order(in.points);
-    const int n = static_cast<int>(in.points.size());
-    for (int tries = 0; tries < 200; ++tries) {
-      const int a = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-      const int b = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-      if (a == b) continue;
-      bool ok = true;
-      for (const auto& c : in.constraints)
-        if (cross_properly(in.points[a], in.points[b], in.points[c[0]], in.points[c[1]])) ok = false;
-      if (ok) in.constraints.push_back({a, b});
-    }
+    add_greedy_segments(in, rng, 200);
     expect_cdt(in.points, in.constraints, constrained_delaunay(in, false).triangles,
                "random segments seed " + std::to_string(seed));
   }
