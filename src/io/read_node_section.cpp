@@ -110,6 +110,19 @@ void check_header(const TextSource& src, const NodeHeader& h, int expected_dim, 
     src.fail(ErrorCode::WrongCount, "boundary marker count must be 0 or 1, found " + std::to_string(h.markers), line);
 }
 
+// An optional list of `what` records: a count line, then the records, each
+// starting with its id; calls row(record, id) for each.
+template <class Row>
+void read_listed(TextSource& src, const std::string& what, Row&& row) {
+  TextRecord record;
+  if (!src.next_record(record)) return;
+  const long long n = count_token(src, record, 0, what + " count");
+  for (long long i = 0; i < n; ++i) {
+    if (!src.next_record(record)) src.fail_truncated("all " + std::to_string(n) + " " + what + "s are listed");
+    row(record, int_token(src, record, 0, what + " id"));
+  }
+}
+
 }  // namespace
 
 NodeSection read_node_section(TextSource& src, const TextRecord& header, int expected_dim) {
@@ -132,29 +145,19 @@ NodeSection read_node_section(TextSource& src, const TextRecord& header, int exp
 }
 
 void read_holes(TextSource& src, int dim, std::vector<double>& holes) {
-  TextRecord record;
-  if (!src.next_record(record)) return;
-  const long long n = count_token(src, record, 0, "hole count");
-  for (long long i = 0; i < n; ++i) {
-    if (!src.next_record(record)) src.fail_truncated("all " + std::to_string(n) + " holes are listed");
-    const long long id = int_token(src, record, 0, "hole id");
+  read_listed(src, "hole", [&](const TextRecord& record, long long id) {
     for (int d = 0; d < dim; ++d) holes.push_back(coord_token(src, record, 1 + static_cast<std::size_t>(d), "hole", id));
-  }
+  });
 }
 
 void read_regions(TextSource& src, int dim, std::vector<double>& regions) {
-  TextRecord record;
-  if (!src.next_record(record)) return;
-  const long long n = count_token(src, record, 0, "region count");
-  for (long long i = 0; i < n; ++i) {
-    if (!src.next_record(record)) src.fail_truncated("all " + std::to_string(n) + " regions are listed");
-    const long long id = int_token(src, record, 0, "region id");
+  read_listed(src, "region", [&](const TextRecord& record, long long id) {
     for (int d = 0; d < dim; ++d)
       regions.push_back(coord_token(src, record, 1 + static_cast<std::size_t>(d), "region", id));
     const auto at = static_cast<std::size_t>(1 + dim);
     regions.push_back(at < record.tokens.size() ? coord_token(src, record, at, "region", id) : 0.0);
     regions.push_back(at + 1 < record.tokens.size() ? coord_token(src, record, at + 1, "region", id) : -1.0);
-  }
+  });
 }
 
 }  // namespace pqmesh::detail
