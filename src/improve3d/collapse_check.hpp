@@ -24,7 +24,7 @@ struct QualityLimits {
   double target = 0;  // ImproveOptions::target_aspect
 };
 
-// Why collapses were refused, for tuning and the tests' reports.
+// Why collapses were refused (counts for tuning: Collapser::refusals).
 enum class Refusal : int { Class, NoEdge, Region, Link, Boundary, Size, Orientation, Quality };
 inline constexpr int kRefusalKinds = 8;
 

@@ -26,8 +26,8 @@ using detail::EdgeQueue;
 using detail::VertexClass;
 
 // The run stops after a pass that collapses nothing, or fewer than
-// kMinYield of the edges it tried (later passes retry nearly every edge of
-// the coarsened mesh for a few collapses), or after kMaxPasses. Only the
+// kMinYield of the edges it tried (late passes retry many edges near the
+// previous pass's collapses for few collapses), or after kMaxPasses. Only the
 // running time and the number of tetrahedra depend on them; every outcome is
 // a valid mesh.
 constexpr int kMaxPasses = 8;
@@ -37,8 +37,18 @@ struct PassResult {
   std::int64_t edges = 0, collapses = 0;
 };
 
+template <class T>
+void expect_size(const std::vector<T>& markers, std::size_t n, const char* what) {
+  if (!markers.empty() && markers.size() != n)
+    throw InvalidInput(ErrorCode::WrongCount, std::string("improve_mesh: ") + what + " markers: " +
+                                                  std::to_string(markers.size()) + " for " + std::to_string(n));
+}
+
 void validate(const Domain3& domain, const TetMesh3& mesh, const std::vector<int>& face_facets,
               const ImproveOptions& options) {
+  expect_size(mesh.vertex_markers, mesh.vertices.size(), "vertex");
+  expect_size(mesh.tetrahedron_markers, mesh.tetrahedra.size(), "tetrahedron");
+  expect_size(mesh.face_markers, mesh.faces.size(), "face");
   if (face_facets.size() != mesh.faces.size())
     throw InvalidInput(ErrorCode::WrongCount, "improve_mesh: " + std::to_string(face_facets.size()) +
                                                   " face facets for " + std::to_string(mesh.faces.size()) +

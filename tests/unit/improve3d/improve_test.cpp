@@ -166,10 +166,16 @@ TEST(QualityCap, NoNewTetrahedronAboveTheCap) {
   EXPECT_LE(c.stats.worst_aspect_after, before.aspect_ratio.max);
 }
 
-TEST(ImproveInput, WrongFaceFacetCountThrows) {
+TEST(ImproveInput, WrongSizesAndFacetIdsThrow) {
   const Domain3 d = corpus("cube.poly");
   TetMesh3 mesh = tet_mesh(d, test::construction_only(TetMeshOptions{})).mesh;
   std::vector<int> facets(mesh.faces.size() + 1, 0);
+  EXPECT_THROW(improve3d::improve_mesh(d, mesh, facets, {}), InvalidInput);
+  facets.pop_back();
+  mesh.tetrahedron_markers.push_back(0);
+  EXPECT_THROW(improve3d::improve_mesh(d, mesh, facets, {}), InvalidInput);
+  mesh.tetrahedron_markers.pop_back();
+  facets[0] = static_cast<int>(d.plc.facets.size());
   EXPECT_THROW(improve3d::improve_mesh(d, mesh, facets, {}), InvalidInput);
 }
 
