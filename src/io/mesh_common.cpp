@@ -61,8 +61,10 @@ void check_mesh(const M& mesh, const WriteOptions& options) {
   }
 }
 
-void drop_all_zero(std::vector<int>& markers) {
+// The markers, or none when they are all zero.
+std::vector<int> unless_all_zero(std::vector<int> markers) {
   if (std::all_of(markers.begin(), markers.end(), [](int m) { return m == 0; })) markers.clear();
+  return markers;
 }
 
 }  // namespace
@@ -89,12 +91,9 @@ TriMesh2 to_trimesh(RawMesh&& raw, const std::string& path) {
   }
   mesh.edges.resize(raw.faces.size() / 2);
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) mesh.edges[e] = {raw.faces[2 * e], raw.faces[2 * e + 1]};
-  mesh.vertex_markers = std::move(raw.vertex_markers);
-  mesh.triangle_markers = std::move(raw.cell_markers);
-  mesh.edge_markers = std::move(raw.face_markers);
-  drop_all_zero(mesh.vertex_markers);
-  drop_all_zero(mesh.triangle_markers);
-  drop_all_zero(mesh.edge_markers);
+  mesh.vertex_markers = unless_all_zero(std::move(raw.vertex_markers));
+  mesh.triangle_markers = unless_all_zero(std::move(raw.cell_markers));
+  mesh.edge_markers = unless_all_zero(std::move(raw.face_markers));
   return mesh;
 }
 
@@ -111,12 +110,9 @@ TetMesh3 to_tetmesh(RawMesh&& raw, const std::string& /*path*/) {
   mesh.faces.resize(raw.faces.size() / 3);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     mesh.faces[f] = {raw.faces[3 * f], raw.faces[3 * f + 1], raw.faces[3 * f + 2]};
-  mesh.vertex_markers = std::move(raw.vertex_markers);
-  mesh.tetrahedron_markers = std::move(raw.cell_markers);
-  mesh.face_markers = std::move(raw.face_markers);
-  drop_all_zero(mesh.vertex_markers);
-  drop_all_zero(mesh.tetrahedron_markers);
-  drop_all_zero(mesh.face_markers);
+  mesh.vertex_markers = unless_all_zero(std::move(raw.vertex_markers));
+  mesh.tetrahedron_markers = unless_all_zero(std::move(raw.cell_markers));
+  mesh.face_markers = unless_all_zero(std::move(raw.face_markers));
   return mesh;
 }
 
