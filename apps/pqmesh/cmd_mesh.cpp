@@ -180,9 +180,9 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
 
 const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "--no-boundary-steiner",
                                                  "--fixed-boundary", "--pipeline", "--thesis-fans", "--no-quality-pass",
-                                                 "--aligned-grid", "--full-separation", "--compress", "--lfs-integral",
-                                                 "--quadtree"};
-const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format",
+                                                 "--aligned-grid", "--full-separation", "--no-improve", "--compress",
+                                                 "--lfs-integral", "--quadtree"};
+const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format", "--target-aspect",
                                                    "--refine-angle"};
 
 int run_mesh(const std::vector<std::string>& argv) {

@@ -102,11 +102,11 @@ void print_lfs_integral_line(const Mesh3Run& run) {
 // dropped, why and what they cost.
 void print_octree_line(const Domain3& domain, const TetMeshStats& s) {
   std::cout << "octree     ";
-  if (!s.separated && s.separated_faces == 0) {
-    std::cout << "light (no separating splits, thesis 4.1.7 steps 6 and 9)\n";
-    return;
-  }
-  if (!s.separated)
+  if (s.extended_margin == 1)
+    std::cout << "lightest (extended boxes 3 times the side, no separating splits)";
+  else if (!s.separated && s.separated_faces == 0)
+    std::cout << "light (no separating splits, thesis 4.1.7 steps 6 and 9)";
+  else if (!s.separated)
     std::cout << "separating splits (thesis 4.1.7 steps 6 and 9) near " << s.separated_faces << " of "
               << domain.edges.size() + domain.plc.facets.size() << " edges and facets only";
   else
@@ -115,6 +115,22 @@ void print_octree_line(const Domain3& domain, const TetMeshStats& s) {
     std::cout << "; the lighter octrees' meshes were dropped after " << fmt_seconds(s.seconds_light)
               << " s: " << s.light_rejected;
   std::cout << '\n';
+}
+
+// The improvement stage: before / after counts and shapes, or why it is off.
+void print_improve_line(const TetMesh3& mesh, const TetMeshStats& s, const Mesh3Run& run) {
+  std::cout << "improve    ";
+  if (!run.options.improve) {
+    std::cout << "off (--no-improve)\n";
+    return;
+  }
+  std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect)
+            << "): tetrahedra " << s.constructed_tetrahedra << " -> " << mesh.tetrahedra.size()
+            << ", max aspect ratio " << fmt4(s.constructed_max_aspect) << " -> " << fmt4(s.max_aspect)
+            << ", dihedral min " << fmt4(s.constructed_min_dihedral) << " deg before\n";
+  if (!s.improve_failure.empty())
+    std::cout << "warning    the improved mesh failed the checker, the construction's mesh is written: "
+              << s.improve_failure << "\n";
 }
 
 void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector<CellField>& fields) {
@@ -143,6 +159,7 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << "; measured bound C / alpha = " << fmt4(kMeasuredAspectAlphaC / alpha.radians) << ", C = "
             << fmt4(kMeasuredAspectAlphaC) << "), dihedral min " << fmt4(q.min_dihedral) << " deg, max "
             << fmt4(q.max_dihedral) << " deg\n";
+  print_improve_line(mesh, s, run);
   print_lfs_integral_line(run);
   std::cout << "grid       "
             << (run.options.generic_grid ? "generic, planes shifted by " +
@@ -163,6 +180,7 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
                                        : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
             << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)
             << ", tetrahedra " << fmt_seconds(s.seconds_tetrahedra) << ", boundary " << fmt_seconds(s.seconds_boundary)
+            << ", improve " << fmt_seconds(s.seconds_improve)
             << "; mesh " << fmt_seconds(run.seconds_mesh) << ", check " << fmt_seconds(run.seconds_check)
             << (run.lfs_integral ? ", lfs " + fmt_seconds(run.seconds_lfs) : std::string()) << ", write "
             << fmt_seconds(run.seconds_write) << '\n'
@@ -198,6 +216,13 @@ int run_mesh3(const std::vector<std::string>& argv) {
   }
   run.options.generic_grid = !args.flag("--aligned-grid");
   if (args.flag("--full-separation")) run.options.separation = TetSeparation::Always;
+  run.options.improve = !args.flag("--no-improve");
+  if (args.option("--target-aspect")) {
+    run.options.target_aspect = args.number("--target-aspect", 0);  // throws UsageError unless a finite number
+    if (!(run.options.target_aspect >= 3))
+      throw UsageError("--target-aspect must be at least 3 (the regular tetrahedron), got '" +
+                       *args.option("--target-aspect") + "'");
+  }
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);
   run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work
   const bool compress = compress_option(args, run.format);

@@ -103,7 +103,7 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,
                    domain=None, max_size=None, size_field=None, aligned_grid=False, warp=True,
-                   full_separation=False):
+                   full_separation=False, improve=True, target_aspect=6.0):
     """Mesh a polyhedral domain (`pqmesh mesh` on a 3D input); returns a TetMesh.
 
     points (N, 3); facets: a list of polygons, each a list of vertex ids (or a list
@@ -119,6 +119,10 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
     warp          the warping of thesis 4.3 (on in the CLI)
     full_separation  the thesis's octree with the separating splits at once, never the lighter
                   octree first (--full-separation; stats["separated"] says which one made the mesh)
+    improve       coarsen the construction's mesh by edge collapses that never raise its worst
+                  aspect ratio (on in the CLI; --no-improve)
+    target_aspect a collapse may leave the tetrahedra it changes as bad as the worse of their
+                  worst before and this aspect ratio (--target-aspect; at least 3)
 
     The result's attributes: domain, alpha (degrees), max_aspect_ratio,
     aspect_bound (the measured bound C / alpha), min_dihedral, max_dihedral
@@ -126,7 +130,8 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
     """
     domain = _domain(Domain3, domain, points, facets, facet_markers, holes, regions)
     return _pqmesh.tet_mesh(domain, _positive("max_size", max_size), size_field,
-                            not aligned_grid, bool(warp), bool(full_separation))
+                            not aligned_grid, bool(warp), bool(full_separation), bool(improve),
+                            float(target_aspect))
 
 
 def check(mesh, domain, *, no_boundary_steiner=False, max_issues=20, locate_vertices=True):

@@ -26,14 +26,21 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("worst_box_rounds") = s.worst_box_rounds, py::arg("split_squares") = s.split_squares,
                   py::arg("warp_failure") = s.warp_failure, py::arg("boundary_faces") = s.boundary_faces,
                   py::arg("separated") = s.separated,
-                  py::arg("separated_faces") = s.separated_faces, py::arg("light_rejected") = s.light_rejected,
+                  py::arg("separated_faces") = s.separated_faces, py::arg("extended_margin") = s.extended_margin,
+                  py::arg("light_rejected") = s.light_rejected,
+                  py::arg("constructed_tetrahedra") = s.constructed_tetrahedra,
+                  py::arg("constructed_max_aspect") = s.constructed_max_aspect, py::arg("collapses") = s.collapses,
+                  py::arg("improve_failure") = s.improve_failure,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
 }
 
 py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,
-                        bool warp, bool full_separation) {
+                        bool warp, bool full_separation, bool improve, double target_aspect) {
+  if (!(target_aspect >= 3)) throw py::value_error("target_aspect must be at least 3 (the regular tetrahedron)");
   TetMeshOptions options;
+  options.improve = improve;
+  options.target_aspect = target_aspect;
   if (full_separation) options.separation = TetSeparation::Always;
   options.max_size = max_size;
   options.generic_grid = generic_grid;
@@ -62,7 +69,8 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
   mesh.attr("stats") = stats_dict(s);
   mesh.attr("seconds") = py::dict(py::arg("octree") = s.seconds_octree, py::arg("classify") = s.seconds_classify,
                                   py::arg("tetrahedra") = s.seconds_tetrahedra, py::arg("boundary") = s.seconds_boundary,
-                                  py::arg("light") = s.seconds_light, py::arg("mesh") = seconds);
+                                  py::arg("light") = s.seconds_light, py::arg("improve") = s.seconds_improve,
+                                  py::arg("mesh") = seconds);
   return mesh;
 }
 
@@ -70,7 +78,8 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
 
 void bind_mesh3d(py::module_& m) {
   m.def("tet_mesh", &run_tet_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
-        py::arg("generic_grid"), py::arg("warp"), py::arg("full_separation"),
+        py::arg("generic_grid"), py::arg("warp"), py::arg("full_separation"), py::arg("improve"),
+        py::arg("target_aspect"),
         "tet_mesh(domain, options); see pqmesh.tetrahedralize.");
 }
 

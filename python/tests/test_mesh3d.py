@@ -101,6 +101,19 @@ def test_full_separation_builds_the_thesis_octree():
     assert light.max_aspect_ratio <= light.aspect_bound and thesis.max_aspect_ratio <= thesis.aspect_bound
 
 
+def test_improve_coarsens_within_the_constructions_worst():
+    coarse = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS)
+    construction = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS, improve=False)
+    assert_valid(coarse)
+    assert_valid(construction)
+    assert len(coarse.tetrahedra) < len(construction.tetrahedra)
+    assert coarse.stats["constructed_tetrahedra"] == len(construction.tetrahedra)
+    assert coarse.max_aspect_ratio <= construction.max_aspect_ratio
+    assert coarse.stats["collapses"] > 0 and construction.stats["collapses"] == 0
+    with pytest.raises(ValueError):
+        pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, target_aspect=2)
+
+
 def test_cavity():
     points, facets = cube_with_cavity()
     mesh = pqmesh.tetrahedralize(points, facets, holes=[(2, 2, 2)], aligned_grid=True)
@@ -145,8 +158,10 @@ def test_size_field_refines_near_its_point():
         distance = np.linalg.norm(mesh.points[mesh.tetrahedra].mean(axis=1), axis=1)
         return (distance < 0.25).sum(), (distance > 1.5).sum()
 
-    plain = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True)
-    graded = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, size_field=([(0, 0, 0)], [0.05]))
+    # The construction's grading (the improvement stage coarsens both).
+    plain = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, improve=False)
+    graded = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, aligned_grid=True, size_field=([(0, 0, 0)], [0.05]),
+                                   improve=False)
     assert_valid(plain)
     assert_valid(graded)
     (plain_near, plain_far), (graded_near, graded_far) = near_and_far(plain), near_and_far(graded)

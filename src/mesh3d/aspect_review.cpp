@@ -69,8 +69,11 @@ AspectReview review_aspect(const mv3d::OctreeBuilder& builder, const std::vector
   const auto& v = mesh.vertices;
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
     const auto& tet = mesh.tetrahedra[t];
-    const double a = memo(v[tet[0]], v[tet[1]], v[tet[2]], v[tet[3]]).aspect_ratio;
+    const TetQuality q = memo(v[tet[0]], v[tet[1]], v[tet[2]], v[tet[3]]);
+    const double a = q.aspect_ratio;
     if (!(a <= out.max_aspect)) out.max_aspect = a;  // NaN counts as worst
+    out.min_dihedral = std::min(out.min_dihedral, q.min_dihedral_deg);
+    out.max_dihedral = std::max(out.max_dihedral, q.max_dihedral_deg);
     if (a * alpha <= kMeasuredAspectAlphaC) continue;
     const std::int32_t leaf = tet_leaf[t];
     if (flagged_leaves.insert(leaf).second) flag_leaf_faces(builder, leaf, out.over_bound);

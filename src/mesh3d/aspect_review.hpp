@@ -32,6 +32,7 @@ void flag_leaf_faces(const mv3d::OctreeBuilder& builder, std::int32_t leaf, Face
 
 struct AspectReview {
   double max_aspect = 0;  // NaN or infinity for a degenerate tetrahedron
+  double min_dihedral = 180, max_dihedral = 0;  // degrees
   // flag_leaf_faces of the leaf of each tetrahedron with
   // aspect * alpha > kMeasuredAspectAlphaC.
   FaceFlags over_bound;

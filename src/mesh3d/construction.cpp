@@ -34,16 +34,17 @@ int region_attribute(const Domain3& domain) {
   return 0;
 }
 
-mv3d::OctreeOptions octree_options(const TetMeshOptions& options, const Separation& separation) {
+mv3d::OctreeOptions octree_options(const TetMeshOptions& options, const OctreeVariant& variant) {
   mv3d::OctreeOptions oo;
   oo.max_size = options.max_size;
   oo.size_field.points = options.size_field.points;
   oo.size_field.sizes = options.size_field.sizes;
   oo.size_field.lines = options.size_field.lines;
   oo.size_field.path = options.size_field.path;
-  oo.separate = separation.separate;
-  oo.separate_edges = separation.faces.edges;
-  oo.separate_facets = separation.faces.facets;
+  oo.extended_margin = variant.extended_margin;
+  oo.separate = variant.separate;
+  oo.separate_edges = variant.faces.edges;
+  oo.separate_facets = variant.faces.facets;
   oo.generic_grid = options.generic_grid;
   return oo;
 }
@@ -52,12 +53,12 @@ mv3d::OctreeOptions octree_options(const TetMeshOptions& options, const Separati
 // boxes; generic grid: every kind, tet3d/box_jobs.hpp), or nothing when some
 // leaf has no job on an octree lighter than the thesis's (c.unsupported).
 std::optional<BoxPlan> plan_jobs(const mv3d::OctreeBuilder& builder, const TetMeshOptions& options,
-                                 const Separation& separation, Construction& c) {
+                                 const OctreeVariant& variant, Construction& c) {
   if (!options.generic_grid) return plan_boxes(builder);
   try {
     return plan_all_kinds(builder);
   } catch (const MeshNotSupported& e) {
-    if (separation.thesis()) throw;
+    if (variant.thesis()) throw;
     c.unsupported = e.what();
     c.review.over_bound = no_faces(builder.domain());
     for (const std::int64_t leaf : e.ids()) flag_leaf_faces(builder, static_cast<std::int32_t>(leaf), c.review.over_bound);
@@ -110,7 +111,7 @@ tet3d::BoxMesh box_tetrahedra(const mv3d::OctreeBuilder& builder, const BoxPlan&
 
 }  // namespace
 
-Construction construct(const Domain3& domain, const TetMeshOptions& options, const Separation& separation,
+Construction construct(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant,
                        double alpha, Clock::time_point t0) {
   Construction c;
   TetMeshStats& s = c.result.stats;
@@ -121,12 +122,13 @@ Construction construct(const Domain3& domain, const TetMeshOptions& options, con
     progress.seconds = since(t0);
     options.progress(progress);
   };
-  s.separated = separation.thesis();
-  s.separated_faces = separation.faces.count();
+  s.extended_margin = variant.extended_margin;
+  s.separated = variant.thesis();
+  s.separated_faces = variant.faces.count();
 
   report("octree");
   auto t = Clock::now();
-  mv3d::OctreeBuilder builder(domain, octree_options(options, separation));
+  mv3d::OctreeBuilder builder(domain, octree_options(options, variant));
   builder.build();
   s.seconds_octree = since(t);
   s.root_size = builder.tree().root().size;
@@ -135,7 +137,7 @@ Construction construct(const Domain3& domain, const TetMeshOptions& options, con
   t = Clock::now();
   progress.boxes = builder.tree().leaf_count();
   report("classify");
-  const std::optional<BoxPlan> plan = plan_jobs(builder, options, separation, c);
+  const std::optional<BoxPlan> plan = plan_jobs(builder, options, variant, c);
   if (!plan) return c;
   record_plan(builder, *plan, s);
   s.seconds_classify = since(t);

@@ -13,13 +13,16 @@
 
 namespace pqmesh::mesh3d {
 
-// Which separating splits (§4.1.7 steps 6 and 9) the octree makes: none
-// (separate false), those of the leaves holding a face of `faces`, or, with
-// `faces` empty, the thesis's (every edge and facet box).
-struct Separation {
+// Which octree a construction builds: the extended boxes' margin in box
+// sides (mv3d::OctreeOptions::extended_margin; the thesis's 2, or 1) and the
+// separating splits (§4.1.7 steps 6 and 9): none (separate false), those of
+// the leaves holding a face of `faces`, or, with `faces` empty, every edge and
+// facet box's. thesis(): margin 2 and every separating split.
+struct OctreeVariant {
+  int extended_margin = 2;
   bool separate = false;
   FaceFlags faces;
-  bool thesis() const { return separate && faces.edges.empty() && faces.facets.empty(); }
+  bool thesis() const { return extended_margin == 2 && separate && faces.edges.empty() && faces.facets.empty(); }
 };
 
 struct Construction {
@@ -37,7 +40,7 @@ struct Construction {
 // alpha: the domain's (radians), for the review. t0: the start of tet_mesh,
 // for options.progress. Throws InvalidInput for a bad size field or
 // max_size, MeshNotSupported (above), InternalError when an invariant breaks.
-Construction construct(const Domain3& domain, const TetMeshOptions& options, const Separation& separation,
+Construction construct(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant,
                        double alpha, std::chrono::steady_clock::time_point t0);
 
 }  // namespace pqmesh::mesh3d

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "improve3d/improve.hpp"
 #include "mesh3d/construction.hpp"
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/check.hpp"
@@ -30,7 +31,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using mesh3d::Construction;
-using mesh3d::Separation;
+using mesh3d::OctreeVariant;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -53,39 +54,88 @@ Verdict verdict(const Domain3& domain, const Construction& c, double alpha) {
           true};
 }
 
-// TetSeparation::Adaptive: the light octree, then up to kLocalRounds octrees
-// separated near the faces the reviews name (the set grows each round); the
-// first mesh kept is returned, with the reason the last dropped one was
-// dropped and the time the dropped ones cost. None kept: `rejected` says why
-// the last was dropped.
+// One construction of the adaptive ladder and what became of it: kept, or
+// the verdict and the faces its review names.
+struct Attempt {
+  std::optional<Construction> kept;
+  Verdict verdict;
+  mesh3d::FaceFlags named;
+};
+
+Attempt attempt(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant, double alpha,
+                Clock::time_point t0) {
+  Attempt a;
+  try {
+    Construction c = construct(domain, options, variant, alpha, t0);
+    a.verdict = verdict(domain, c, alpha);
+    if (a.verdict.why.empty()) a.kept = std::move(c);
+    else a.named = std::move(c.review.over_bound);
+  } catch (const MeshNotSupported& e) {  // the aligned grid's plan
+    a.verdict = {e.what(), false};
+  } catch (const InternalError& e) {
+    a.verdict = {e.what(), false};
+  }
+  return a;
+}
+
+// TetSeparation::Adaptive, lightest first: extended boxes of margin 1 without
+// separating splits; then margin 2 (the thesis's ex(b)) without them; then up
+// to kLocalRounds octrees separated near the faces the reviews name (the set
+// grows each round). The first mesh kept is returned, with the reason the
+// last dropped one was dropped and the time the dropped ones cost. None kept:
+// `rejected` says why the last was dropped.
 constexpr int kLocalRounds = 2;
 
-std::optional<TetMeshResult> adaptive(const Domain3& domain, const TetMeshOptions& options, double alpha,
-                                      Clock::time_point t0, std::string& rejected) {
-  Separation separation;
-  for (int round = 0; round <= kLocalRounds; ++round) {
-    try {
-      const double before = since(t0);
-      Construction c = construct(domain, options, separation, alpha, t0);
-      Verdict v = verdict(domain, c, alpha);
-      if (v.why.empty()) {
-        c.result.stats.light_rejected = rejected;
-        c.result.stats.seconds_light = before;
-        return std::move(c.result);
-      }
-      rejected = std::move(v.why);
-      if (!v.separate_near || c.review.over_bound.count() == 0) return std::nullopt;
-      if (!separation.separate) separation = {true, std::move(c.review.over_bound)};
-      else if (!separation.faces.merge(c.review.over_bound)) return std::nullopt;
-    } catch (const MeshNotSupported& e) {  // the aligned grid's plan
-      rejected = e.what();
-      return std::nullopt;
-    } catch (const InternalError& e) {
-      rejected = e.what();
-      return std::nullopt;
+std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions& options, double alpha,
+                                     Clock::time_point t0, std::string& rejected) {
+  const auto run = [&](const OctreeVariant& variant) {
+    const double before = since(t0);
+    Attempt a = attempt(domain, options, variant, alpha, t0);
+    if (a.kept) {
+      a.kept->result.stats.light_rejected = rejected;
+      a.kept->result.stats.seconds_light = before;
+    } else {
+      rejected = a.verdict.why;
     }
+    return a;
+  };
+  if (Attempt a = run(OctreeVariant{1, false, {}}); a.kept) return std::move(a.kept);
+  OctreeVariant variant{2, false, {}};
+  for (int round = 0; round <= kLocalRounds; ++round) {
+    Attempt a = run(variant);
+    if (a.kept) return std::move(a.kept);
+    if (!a.verdict.separate_near || a.named.count() == 0) return std::nullopt;
+    if (!variant.separate) variant = {2, true, std::move(a.named)};
+    else if (!variant.faces.merge(a.named)) return std::nullopt;
   }
   return std::nullopt;
+}
+
+// The improvement stage (TetMeshOptions::improve): edge collapses capped by
+// the construction's worst aspect ratio, so the bound the construction met
+// still holds. The improved mesh is checked; if the checker rejects it, the
+// failure is recorded and the construction is rebuilt unimproved (same input,
+// same options: the same mesh).
+void improve(const Domain3& domain, const TetMeshOptions& options, Construction& c) {
+  TetMeshStats& s = c.result.stats;
+  s.constructed_tetrahedra = static_cast<std::int64_t>(c.result.mesh.tetrahedra.size());
+  s.constructed_max_aspect = c.review.max_aspect;
+  s.constructed_min_dihedral = c.review.min_dihedral;
+  s.constructed_max_dihedral = c.review.max_dihedral;
+  if (!options.improve) return;
+  improve3d::ImproveOptions io;
+  io.aspect_cap = c.review.max_aspect;
+  io.target_aspect = options.target_aspect;
+  io.max_size = options.max_size;
+  io.size_points = options.size_field.points;
+  io.sizes = options.size_field.sizes;
+  const improve3d::ImproveStats is = improve3d::improve_mesh(domain, c.result.mesh, c.face_facets, io);
+  s.collapses = is.collapses;
+  s.seconds_improve = is.seconds;
+  s.max_aspect = is.worst_aspect_after;
+  const CheckReport check = check_mesh(c.result.mesh, domain);
+  if (check.valid()) return;
+  s.improve_failure = check.to_text().substr(0, check.to_text().find('\n'));
 }
 
 }  // namespace
@@ -93,23 +143,32 @@ std::optional<TetMeshResult> adaptive(const Domain3& domain, const TetMeshOption
 TetMeshResult tet_mesh(const Domain3& domain, const TetMeshOptions& options) {
   const auto t0 = Clock::now();
   const double alpha = compute_alpha(domain.plc).radians;
-  auto finish = [&](TetMeshResult& r) {
-    const TetMeshStats& s = r.stats;
-    const std::int64_t jobs = s.empty_jobs + s.facet_jobs + s.edge_jobs + s.vertex_jobs + s.two_facet_jobs;
-    const auto tetrahedra = static_cast<std::int64_t>(r.mesh.tetrahedra.size());
-    if (options.progress) options.progress(TetMeshProgress{"done", s.leaves, jobs, tetrahedra, since(t0)});
-    return std::move(r);
-  };
   std::string rejected;
-  if (options.separation == TetSeparation::Adaptive) {
-    std::optional<TetMeshResult> kept = adaptive(domain, options, alpha, t0, rejected);
-    if (kept) return finish(*kept);
+  std::optional<Construction> c;
+  if (options.separation == TetSeparation::Adaptive) c = adaptive(domain, options, alpha, t0, rejected);
+  if (!c) {
+    const double rejected_seconds = since(t0);
+    c = construct(domain, options, OctreeVariant{2, true, {}}, alpha, t0);
+    c->result.stats.light_rejected = rejected;
+    c->result.stats.seconds_light = options.separation == TetSeparation::Adaptive ? rejected_seconds : 0;
   }
-  const double rejected_seconds = since(t0);
-  TetMeshResult full = construct(domain, options, Separation{true, {}}, alpha, t0).result;
-  full.stats.light_rejected = rejected;
-  full.stats.seconds_light = options.separation == TetSeparation::Adaptive ? rejected_seconds : 0;
-  return finish(full);
+  if (options.progress && options.improve) {
+    const auto tetrahedra = static_cast<std::int64_t>(c->result.mesh.tetrahedra.size());
+    options.progress(TetMeshProgress{"improve", c->result.stats.leaves, 0, tetrahedra, since(t0)});
+  }
+  improve(domain, options, *c);
+  if (!c->result.stats.improve_failure.empty()) {
+    TetMeshOptions unimproved = options;
+    unimproved.improve = false;
+    TetMeshResult r = tet_mesh(domain, unimproved);
+    r.stats.improve_failure = c->result.stats.improve_failure;
+    return r;
+  }
+  const TetMeshStats& s = c->result.stats;
+  const std::int64_t jobs = s.empty_jobs + s.facet_jobs + s.edge_jobs + s.vertex_jobs + s.two_facet_jobs;
+  const auto tetrahedra = static_cast<std::int64_t>(c->result.mesh.tetrahedra.size());
+  if (options.progress) options.progress(TetMeshProgress{"done", s.leaves, jobs, tetrahedra, since(t0)});
+  return std::move(c->result);
 }
 
 }  // namespace pqmesh

@@ -119,6 +119,8 @@ OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
                            (finite ? " has a size that is not a positive finite number" : " has a non-finite point"),
                        {static_cast<std::int64_t>(i)}, sf.path, line);
   }
+  if (options_.extended_margin != 1 && options_.extended_margin != 2)
+    throw InternalError("mv3d octree: extended_margin must be 1 or 2");
   const bool scoped = !options_.separate_edges.empty() || !options_.separate_facets.empty();
   if (scoped && (options_.separate_edges.size() != domain.edges.size() ||
                  options_.separate_facets.size() != domain.plc.facets.size()))
@@ -291,8 +293,7 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
       data_.push_back(std::move(cd));
       continue;
     }
-    const auto eb = tree_.extended_box(child);
-    const Cube ex{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}};
+    const Cube ex = ex_cube(child);
     if (interior) {
       cd.has_component = true;
       if (!pd.ex_tris.empty()) cd.ex_tris = triangles_meeting(domain_, ex, pd.ex_tris);
@@ -346,7 +347,7 @@ void OctreeBuilder::assign_children(std::int32_t parent, std::int32_t first_chil
 }
 
 Cube OctreeBuilder::ex_cube(std::int32_t node) const {
-  const auto eb = tree_.extended_box(node);
+  const auto eb = tree_.extended_box(node, options_.extended_margin);
   return Cube{{eb.lo[0], eb.lo[1], eb.lo[2]}, {eb.hi[0], eb.hi[1], eb.hi[2]}};
 }
 

@@ -93,6 +93,11 @@ struct OctreeOptions {
   // (flags indexed by Domain3 edge / facet id; sizes equal to the counts).
   // Empty: every edge and facet, the thesis's rule.
   std::vector<char> separate_edges, separate_facets;
+  // ex(b) reaches this many box sides beyond b on every side (§4.1.1: 2, the
+  // cube of 5 times the side). 1 (3 times the side) declares fewer boxes
+  // crowded: a lighter octree that the 3D mesher tries first
+  // (docs/algorithm/mesh3d.md "Light construction first"). 1 or 2.
+  int extended_margin = 2;
   // Generic grid (tree/root_cube.hpp choose_generic_root_cube;
   // docs/algorithm/octree3d.md): every box plane is shifted by a fixed offset
   // so that no input vertex coordinate lies on a box plane of any level the

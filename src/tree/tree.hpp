@@ -151,9 +151,10 @@ class Tree {
   double key_plane(const Key& k, int axis, bool upper) const;
   Box box(std::int32_t n) const;
   // The extended box ex(b) of thesis §4.1.1: the concentric cube of 5 times the side,
-  // [lo - 2h, hi + 2h] per axis. Its planes are exact doubles as well (dyadic, same
-  // scale); it may reach outside the root cube.
-  Box extended_box(std::int32_t n) const;
+  // [lo - 2h, hi + 2h] per axis (margin 2; margin m gives [lo - m h, hi + m h], m in
+  // 1..4). Its planes are exact doubles as well (dyadic, same scale); it may reach
+  // outside the root cube.
+  Box extended_box(std::int32_t n, int margin = 2) const;
 
   // ---- structure
   // Splits leaf n into 2^D children (component 0, payload -1, unprotected) and

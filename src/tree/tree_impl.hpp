@@ -73,9 +73,9 @@ inline typename Tree<D>::Box Tree<D>::box(std::int32_t n) const {
 }
 
 template <int D>
-typename Tree<D>::Box Tree<D>::extended_box(std::int32_t n) const {
+typename Tree<D>::Box Tree<D>::extended_box(std::int32_t n, int margin) const {
   Box b = box(n);
-  const double h2 = 2 * side(n);  // exact: a power of two
+  const double h2 = margin * side(n);  // exact: a small integer times a power of two
   for (int a = 0; a < D; ++a) {
     b.lo[a] -= h2;  // exact: integer multiples of h / 2 well inside 53 bits
     b.hi[a] += h2;

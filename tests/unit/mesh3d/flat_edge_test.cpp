@@ -36,6 +36,7 @@ TetMeshStats mesh_and_check(const std::string& what, const Domain3& d) {
   const double alpha = compute_alpha(d.plc).radians;
   const double aspect = quality_report(r.mesh).aspect_ratio.max;
   EXPECT_LE(aspect * alpha, test::kAspectAlphaC) << what;
+  EXPECT_LE(aspect, r.stats.constructed_max_aspect) << what << ": the improvement stage raised the worst";
   std::printf("%-34s %9zu tets, alpha %6.2f deg, aspect * alpha %8.1f, %lld worst-box rounds, %s\n",
               what.c_str(), r.mesh.tetrahedra.size(), alpha * 180 / 3.14159265358979, aspect * alpha,
               static_cast<long long>(r.stats.worst_box_rounds), test::octree_used(r.stats).c_str());

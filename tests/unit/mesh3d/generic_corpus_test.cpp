@@ -25,8 +25,8 @@
 namespace pqmesh {
 namespace {
 
-TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
-  const TetMeshResult r = tet_mesh(d);
+TetMeshResult mesh_and_check(const std::string& what, const Domain3& d, const TetMeshOptions& options = {}) {
+  const TetMeshResult r = tet_mesh(d, options);
   test::expect_valid_with_markers(what, r, d);
   const QualityReport q = quality_report(r.mesh);
   const TetMeshStats& s = r.stats;
@@ -39,6 +39,7 @@ TetMeshResult mesh_and_check(const std::string& what, const Domain3& d) {
               static_cast<long long>(s.vertex_jobs), static_cast<long long>(s.two_facet_jobs), q.aspect_ratio.max,
               aspect_alpha, test::kAspectAlphaC, q.min_angle.min, q.max_angle.max, test::octree_used(s).c_str(),
               s.warp_failure.empty() ? "" : ", unwarped fallback");
+  EXPECT_LE(q.aspect_ratio.max, s.constructed_max_aspect) << what << ": the improvement stage raised the worst";
   EXPECT_LE(aspect_alpha, test::kAspectAlphaC) << what << ": max aspect " << q.aspect_ratio.max << " at alpha "
                                                << alpha << " rad";
   return r;
@@ -62,14 +63,17 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Slow, GenericCorpus,
 
 // Geodesic grading: the tuning fork (a square cavity opened to the outside by a
 // neck of width w; mv3d/octree_geodesic_test.cpp) has no feature of size w
-// inside P, so its tetrahedron count may change by at most 1.5x between
-// w = 1e-1 and w = 1e-3 (octest::tuning_fork: widths rounded to multiples of
-// 2^-12, dyadic coordinates).
+// inside P, so the tetrahedron count of the thesis's octree (unimproved) may
+// change by at most 1.5x between w = 1e-1 and w = 1e-3 (octest::tuning_fork:
+// widths rounded to multiples of 2^-12, dyadic coordinates).
 using mv3d::octest::tuning_fork;
 
 TEST(GenericGeodesic, TuningForkCountIndependentOfTheNeckWidth) {
-  const TetMeshResult wide = mesh_and_check("tuning fork 1e-1", make_domain(tuning_fork(1e-1)));
-  const TetMeshResult narrow = mesh_and_check("tuning fork 1e-3", make_domain(tuning_fork(1e-3)));
+  TetMeshOptions construction;
+  construction.separation = TetSeparation::Always;
+  construction.improve = false;
+  const TetMeshResult wide = mesh_and_check("tuning fork 1e-1", make_domain(tuning_fork(1e-1)), construction);
+  const TetMeshResult narrow = mesh_and_check("tuning fork 1e-3", make_domain(tuning_fork(1e-3)), construction);
   const double ratio =
       static_cast<double>(narrow.mesh.tetrahedra.size()) / static_cast<double>(wide.mesh.tetrahedra.size());
   std::printf("tuning fork: %zu tets at w = 1e-1, %zu at w = 1e-3, ratio %.3f\n", wide.mesh.tetrahedra.size(),

@@ -119,7 +119,8 @@ TEST(GenericGrid, TreePlanesCarryTheOffset) {
 }
 
 // On the generic grid every leaf plane misses every input coordinate; the
-// cube then has vertex, edge and facet boxes, and its mesh is valid.
+// cube's octree (the thesis's, unimproved) then has vertex, edge and facet
+// boxes, and its mesh is valid.
 TEST(GenericGrid, OctreeLeavesMissCoordinatesAndTheMeshIsValid) {
   const Domain3 d = make_domain(read_plc(test::data_path("3d/cube.poly")));
   mv3d::OctreeOptions oo;
@@ -141,7 +142,10 @@ TEST(GenericGrid, OctreeLeavesMissCoordinatesAndTheMeshIsValid) {
     }
   }
   std::printf("cube on the generic grid: %lld leaves\n", static_cast<long long>(leaves));
-  const TetMeshResult r = tet_mesh(d);
+  TetMeshOptions thesis_octree;
+  thesis_octree.separation = TetSeparation::Always;
+  thesis_octree.improve = false;
+  const TetMeshResult r = tet_mesh(d, thesis_octree);
   const CheckReport rep = check_mesh(r.mesh, d);
   EXPECT_TRUE(rep.valid()) << rep.to_text();
   EXPECT_GT(r.stats.edge_jobs, 0);

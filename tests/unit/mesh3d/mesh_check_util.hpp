@@ -18,13 +18,14 @@
 
 namespace pqmesh::test {
 
-// Which octree made a mesh (TetSeparation), for the tests' lines: "light",
-// "near N faces" or "thesis", with the reason the last lighter mesh was
+// Which octree made a mesh (TetSeparation), for the tests' lines: "lightest",
+// "light", "near N faces" or "thesis", with the reason the last lighter mesh was
 // dropped.
 inline std::string octree_used(const TetMeshStats& s) {
-  std::string out = s.separated ? "thesis octree"
-                    : s.separated_faces > 0 ? "octree separated near " + std::to_string(s.separated_faces) + " faces"
-                                            : "light octree";
+  std::string out = s.separated                 ? "thesis octree"
+                    : s.separated_faces > 0       ? "octree separated near " + std::to_string(s.separated_faces) + " faces"
+                    : s.extended_margin == 1      ? "lightest octree"
+                                                  : "light octree";
   if (!s.light_rejected.empty()) out += " (dropped: " + s.light_rejected.substr(0, 100) + ")";
   return out;
 }

@@ -173,7 +173,7 @@ TEST(TetMeshProgress, PhasesInOrder) {
     boxes = p.boxes;
   };
   const TetMeshResult r = tet_mesh(d, o);
-  const std::vector<std::string> want = {"octree", "classify", "tetrahedra", "boundary", "done"};
+  const std::vector<std::string> want = {"octree", "classify", "tetrahedra", "boundary", "improve", "done"};
   EXPECT_EQ(phases, want);
   EXPECT_EQ(last_tets, static_cast<std::int64_t>(r.mesh.tetrahedra.size()));
   EXPECT_EQ(boxes, r.stats.leaves);
