@@ -39,9 +39,12 @@ CollapseMesh::CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facet
   faces_of_vertex_.build(faces_, points_.size());
   one_region_ = std::all_of(tet_markers_.begin(), tet_markers_.end(), [&](int m) { return m == tet_markers_.front(); });
   aspect_.resize(tets_.size());
+  dihedral_.resize(tets_.size());
   for (std::size_t t = 0; t < tets_.size(); ++t) {
     const auto& k = tets_[t];
-    aspect_[t] = memo(point(k[0]), point(k[1]), point(k[2]), point(k[3])).aspect_ratio;
+    const TetQuality q = memo(point(k[0]), point(k[1]), point(k[2]), point(k[3]));
+    aspect_[t] = q.aspect_ratio;
+    dihedral_[t] = q.min_dihedral_deg;
   }
 }
 
@@ -76,6 +79,45 @@ double CollapseMesh::worst_aspect() const {
   for (std::size_t t = 0; t < tets_.size(); ++t)
     if (tets_[t][0] >= 0) worst = std::max(worst, aspect_[t]);
   return worst;
+}
+
+void CollapseMesh::measure_dihedrals(TetrahedronQualityMemo& memo) {
+  for (std::size_t t = 0; t < tets_.size(); ++t) {
+    const auto& k = tets_[t];
+    if (k[0] >= 0) dihedral_[t] = memo(point(k[0]), point(k[1]), point(k[2]), point(k[3])).min_dihedral_deg;
+  }
+}
+
+double CollapseMesh::min_dihedral() const {
+  double least = 180;
+  for (std::size_t t = 0; t < tets_.size(); ++t)
+    if (tets_[t][0] >= 0) least = std::min(least, dihedral_[t]);
+  return least;
+}
+
+void CollapseMesh::move_vertex(int v, Vec3 p, std::span<const int> tets, std::span<const double> aspect,
+                               std::span<const double> dihedral) {
+  points_[static_cast<std::size_t>(v)] = p;
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    aspect_[static_cast<std::size_t>(tets[i])] = aspect[i];
+    dihedral_[static_cast<std::size_t>(tets[i])] = dihedral[i];
+  }
+}
+
+int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect, double dihedral) {
+  const int t = static_cast<int>(tets_.size());
+  tets_.push_back(k);
+  tet_markers_.push_back(marker);
+  aspect_.push_back(aspect);
+  dihedral_.push_back(dihedral);
+  for (const int x : k) tets_of_vertex_.append(x, std::span<const int>(&t, 1));
+  ++live_tets_;
+  return t;
+}
+
+void CollapseMesh::remove_tet(int t) {
+  tets_[static_cast<std::size_t>(t)][0] = -1;  // dropped from the vertex segments when next walked
+  --live_tets_;
 }
 
 void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) const {

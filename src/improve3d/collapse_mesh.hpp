@@ -6,7 +6,10 @@
 // segment per vertex (adjacency.hpp). A dead element has vertex -1 first.
 //
 // Element ids never change while collapsing; write_back() renumbers the
-// survivors compactly in their old order (deterministic).
+// survivors compactly in their old order (deterministic). After the
+// collapses, smoothing (smooth.hpp) moves vertices and flips (flips.hpp)
+// replace tetrahedra: a new tetrahedron always gets a new id (appended), so
+// the survivors keep their order and the new ones follow in creation order.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -31,6 +34,10 @@ class CollapseMesh {
   int tet_marker(int t) const { return tet_markers_[static_cast<std::size_t>(t)]; }
   bool one_region() const { return one_region_; }  // every tetrahedron has the same marker
   double aspect(int t) const { return aspect_[static_cast<std::size_t>(t)]; }
+  // The minimum dihedral angle (degrees) of t: valid only after measure_dihedrals()
+  // (collapses do not keep it), kept by move_vertex / add_tet.
+  double dihedral(int t) const { return dihedral_[static_cast<std::size_t>(t)]; }
+  int tet_count() const { return static_cast<int>(tets_.size()); }  // ids, live or dead
   const std::array<int, 3>& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
   int face_facet(int f) const { return face_facets_[static_cast<std::size_t>(f)]; }
   std::int64_t live_tets() const { return live_tets_; }
@@ -53,6 +60,16 @@ class CollapseMesh {
   void apply(const Collapse& c);
 
   double worst_aspect() const;
+  // Measures the minimum dihedral angle of every live tetrahedron (through memo).
+  void measure_dihedrals(TetrahedronQualityMemo& memo);
+  double min_dihedral() const;  // over the live tetrahedra; needs measure_dihedrals()
+
+  // Smoothing: v goes to p; tets[i] (the star of v) gets aspect[i], dihedral[i].
+  void move_vertex(int v, Vec3 p, std::span<const int> tets, std::span<const double> aspect,
+                   std::span<const double> dihedral);
+  // Flips: a new tetrahedron (new id, returned) and the deletion of one.
+  int add_tet(const std::array<int, 4>& k, int marker, double aspect, double dihedral);
+  void remove_tet(int t);
   // The survivors, renumbered in their old order, into mesh and face_facets.
   void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
 
@@ -62,7 +79,7 @@ class CollapseMesh {
   std::vector<std::uint8_t> vertex_alive_;
   std::vector<std::array<int, 4>> tets_;
   std::vector<int> tet_markers_;
-  std::vector<double> aspect_;
+  std::vector<double> aspect_, dihedral_;
   Adjacency tets_of_vertex_;
   std::vector<std::array<int, 3>> faces_;
   std::vector<int> face_markers_, face_facets_;

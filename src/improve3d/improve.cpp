@@ -11,6 +11,7 @@
 #include "improve3d/collapse_mesh.hpp"
 #include "improve3d/edge_queue.hpp"
 #include "improve3d/size_bound.hpp"
+#include "improve3d/smooth.hpp"
 #include "improve3d/vertex_classes.hpp"
 #include "pqmesh/errors.hpp"
 #include "quality/tetrahedron_quality_memo.hpp"
@@ -32,6 +33,9 @@ using detail::VertexClass;
 // a valid mesh.
 constexpr int kMaxPasses = 8;
 constexpr double kMinYield = 0.02;
+// Smoothing passes: at most kMaxSmoothPasses; each pass after the first tries
+// only vertices whose star changed, and the run stops on a pass that moves nothing.
+constexpr int kMaxSmoothPasses = 6;
 
 struct PassResult {
   std::int64_t edges = 0, collapses = 0;
@@ -207,6 +211,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   stats.tetrahedra_before = work.live_tets();
   stats.vertices_before = work.live_vertices();
   stats.worst_aspect_before = work.worst_aspect();
+  stats.min_dihedral_before = work.min_dihedral();  // measured by the constructor
   while (stats.passes < kMaxPasses) {
     const PassResult pass = coarsener.pass();
     const std::int64_t done = pass.collapses;
@@ -214,6 +219,15 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
     stats.collapses += done;
     if (static_cast<double>(done) < kMinYield * static_cast<double>(pass.edges) || done == 0) break;
   }
+  work.measure_dihedrals(memo);
+  stats.min_dihedral_collapsed = work.min_dihedral();
+  if (options.smooth) {
+    detail::Smoother smoother(work, detail::vertex_mobility(domain, work, classes), size, options.aspect_cap);
+    for (int pass = 0; pass < kMaxSmoothPasses; ++pass)
+      if (smoother.pass() == 0) break;
+    stats.smoothed = smoother.moved_vertices();
+  }
+  stats.min_dihedral_after = work.min_dihedral();
   stats.tetrahedra_after = work.live_tets();
   stats.vertices_after = work.live_vertices();
   stats.worst_aspect_after = work.worst_aspect();

@@ -3,8 +3,8 @@
 // (../shared/IMPROVEMENT.md "The rule that keeps a guarantee").
 //
 // A collapse of edge (u, v) deletes u: every tetrahedron of u is re-pointed to
-// v and the tetrahedra holding both vanish. Vertices never move, so every
-// remaining vertex keeps the exact coordinates the checker accepted. A
+// v and the tetrahedra holding both vanish. Collapses never move a vertex, so
+// every remaining vertex keeps the exact coordinates the checker accepted. A
 // collapse is accepted only when all of these hold (collapse_check.hpp):
 //   1. vertex classes (vertex_classes.hpp): u is no input vertex, its facet
 //      set lies in v's, and a vertex on an input edge moves along that edge;
@@ -18,6 +18,14 @@
 // With aspect_cap = the construction's worst aspect ratio, the coarsened
 // mesh's worst never exceeds it, so every bound proved for the construction
 // holds for the result.
+//
+// After the collapses, passes of vertex smoothing (smooth.hpp) raise the
+// minimum dihedral angle: each accepted operation keeps every changed tetrahedron positive
+// (exact orient3d), does not raise the changed region's worst aspect ratio
+// (and keeps it <= aspect_cap), raises its minimum dihedral angle by a fixed
+// least gain, and keeps the boundary (smoothing moves only interior vertices
+// and vertices inside an axis-aligned facet, within its plane). So the minimum dihedral angle never falls and
+// the worst aspect ratio never rises in these passes.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -40,12 +48,18 @@ struct ImproveOptions {
   double max_size = 0;
   std::vector<Vec3> size_points;
   std::vector<double> sizes;
+  // Vertex smoothing after the collapses (see above).
+  bool smooth = true;
 };
 
 struct ImproveStats {
   std::int64_t tetrahedra_before = 0, tetrahedra_after = 0, vertices_before = 0, vertices_after = 0;
   std::int64_t collapses = 0, passes = 0;
   double worst_aspect_before = 0, worst_aspect_after = 0, seconds = 0;
+  // Vertices moved by smoothing (each counted once).
+  std::int64_t smoothed = 0;
+  // Minimum dihedral angle (degrees) of the input mesh, after the collapses, and at the end.
+  double min_dihedral_before = 0, min_dihedral_collapsed = 0, min_dihedral_after = 0;
 };
 
 // mesh: a valid mesh of domain (check_mesh passes) with mesh.faces = its boundary triangles (outward),

@@ -1,0 +1,253 @@
+#include "improve3d/smooth.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+
+#include "pqmesh/quality.hpp"
+#include "predicates/predicates.hpp"
+
+namespace pqmesh::improve3d::detail {
+
+namespace {
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// The axis whose coordinate every PLC vertex of the facet shares bit for bit; -1 when none.
+int facet_axis(const Domain3& domain, const Facet3& facet) {
+  for (int axis = 0; axis < 3; ++axis) {
+    bool first = true, same = true;
+    double c = 0;
+    for (const auto& loop : facet.loops)
+      for (const int x : loop) {
+        const double y = axis_coord(domain.plc.vertices[static_cast<std::size_t>(x)], axis);
+        if (first) c = y;
+        same = same && same_bits(c, y);
+        first = false;
+      }
+    if (!first && same) return axis;
+  }
+  return -1;
+}
+
+std::array<Vec3, 4> corners(const CollapseMesh& mesh, const std::array<int, 4>& k, int v, Vec3 q) {
+  std::array<Vec3, 4> p{};
+  for (std::size_t i = 0; i < 4; ++i) p[i] = k[i] == v ? q : mesh.point(k[i]);
+  return p;
+}
+
+double min_dihedral_at(const CollapseMesh& mesh, int t, int v, Vec3 q) {
+  const auto p = corners(mesh, mesh.tet(t), v, q);
+  return tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_deg;
+}
+
+// The steps along the ascent direction, in units of the mean edge length of the star.
+constexpr std::array<double, 5> kAscentSteps = {0.1, 0.05, 0.025, 0.0125, 0.00625};
+
+}  // namespace
+
+std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes) {
+  std::vector<int> axis(domain.plc.facets.size());
+  for (std::size_t f = 0; f < axis.size(); ++f) axis[f] = facet_axis(domain, domain.plc.facets[f]);
+  std::vector<std::int8_t> mobility(static_cast<std::size_t>(mesh.vertex_count()), -1);
+  std::vector<int> faces;
+  for (int v = 0; v < mesh.vertex_count(); ++v) {
+    if (!mesh.vertex_alive(v)) continue;
+    faces.clear();
+    mesh.faces_of(v, faces);
+    std::int8_t& m = mobility[static_cast<std::size_t>(v)];
+    if (classes.of(v) == VertexClass::Interior) {
+      if (faces.empty()) m = 3;
+    } else if (classes.of(v) == VertexClass::Facet && !faces.empty()) {
+      const int f = classes.facets_of(v)[0];
+      const bool one_facet =
+          std::all_of(faces.begin(), faces.end(), [&](int b) { return mesh.face_facet(b) == f; });
+      if (one_facet && axis[static_cast<std::size_t>(f)] >= 0)
+        m = static_cast<std::int8_t>(axis[static_cast<std::size_t>(f)]);
+    }
+  }
+  return mobility;
+}
+
+Smoother::Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const SizeBound& size, double aspect_cap)
+    : mesh_(mesh), mobility_(std::move(mobility)), size_(size), cap_(aspect_cap),
+      changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
+      tried_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
+      moved_(static_cast<std::size_t>(mesh.vertex_count()), 0),
+      marks_(static_cast<std::size_t>(mesh.vertex_count()), 0) {}
+
+double Smoother::star_min_dihedral(int v) {
+  star_.clear();
+  mesh_.tets_of(v, star_);
+  double least = 180;
+  for (const int t : star_) least = std::min(least, mesh_.dihedral(t));
+  return least;
+}
+
+std::int64_t Smoother::pass() {
+  std::vector<std::pair<double, int>> order;
+  for (int v = 0; v < mesh_.vertex_count(); ++v) {
+    const std::size_t x = static_cast<std::size_t>(v);
+    if (!mesh_.vertex_alive(v) || mobility_[x] < 0) continue;
+    if (!first_pass_ && changed_at_[x] <= tried_at_[x]) continue;
+    order.emplace_back(star_min_dihedral(v), v);
+  }
+  first_pass_ = false;
+  std::sort(order.begin(), order.end());
+  std::int64_t moved = 0;
+  for (const auto& [key, v] : order) {
+    tried_at_[static_cast<std::size_t>(v)] = clock_++;
+    if (!try_vertex(v)) continue;
+    ++moved;
+    if (moved_[static_cast<std::size_t>(v)] == 0) ++moved_vertices_;
+    moved_[static_cast<std::size_t>(v)] = 1;
+    for (const int x : neighbours_) changed_at_[static_cast<std::size_t>(x)] = clock_;
+    changed_at_[static_cast<std::size_t>(v)] = clock_;
+  }
+  return moved;
+}
+
+void Smoother::touched(const std::vector<int>& tets) {
+  for (const int t : tets)
+    for (const int x : mesh_.tet(t))
+      if (x >= 0) changed_at_[static_cast<std::size_t>(x)] = clock_;
+  ++clock_;
+}
+
+// The quality of the star of v with v at q; false when a tetrahedron is not
+// positive or the star's worst aspect ratio exceeds `trial.worst_aspect` (the limit on entry).
+bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect,
+                        std::vector<double>& dihedral) const {
+  const double limit = trial.worst_aspect;
+  trial.q = q;
+  trial.worst_aspect = 0;
+  trial.min_dihedral = 180;
+  aspect.clear();
+  dihedral.clear();
+  for (const int t : star_) {
+    const auto p = corners(mesh_, mesh_.tet(t), v, q);
+    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+  }
+  for (const int t : star_) {
+    const auto p = corners(mesh_, mesh_.tet(t), v, q);
+    const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+    if (!(tq.aspect_ratio <= limit)) return false;  // NaN never passes
+    trial.worst_aspect = std::max(trial.worst_aspect, tq.aspect_ratio);
+    trial.min_dihedral = std::min(trial.min_dihedral, tq.min_dihedral_deg);
+    aspect.push_back(tq.aspect_ratio);
+    dihedral.push_back(tq.min_dihedral_deg);
+  }
+  return true;
+}
+
+// Rule 4 of smooth.hpp for the edge from v (moving from p to q) to each neighbour.
+bool Smoother::within_size(Vec3 p, Vec3 q) const {
+  if (!size_.bounded()) return true;
+  for (const int x : neighbours_) {
+    const Vec3 r = mesh_.point(x);
+    if (!size_.allows(q, r) && norm(r - q) > norm(r - p)) return false;
+  }
+  return true;
+}
+
+// A step of length `step` from v along the gradient (central differences)
+// of the minimum dihedral angle of worst_tet; v itself when the gradient vanishes.
+Vec3 Smoother::ascent(int v, int worst_tet, double step) const {
+  const Vec3 p = mesh_.point(v);
+  const int fixed = mobility_[static_cast<std::size_t>(v)];
+  const double h = 1e-6 * step;
+  Vec3 g{};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == fixed) continue;
+    Vec3 plus = p, minus = p;
+    axis_ref(plus, axis) += h;
+    axis_ref(minus, axis) -= h;
+    axis_ref(g, axis) = min_dihedral_at(mesh_, worst_tet, v, plus) - min_dihedral_at(mesh_, worst_tet, v, minus);
+  }
+  const double length = norm(g);
+  if (!(length > 0) || !std::isfinite(length)) return p;
+  Vec3 q = p + (step / length) * g;
+  if (fixed < 3) axis_ref(q, fixed) = axis_coord(p, fixed);
+  return q;
+}
+
+bool Smoother::try_vertex(int v) {
+  const int fixed = mobility_[static_cast<std::size_t>(v)];
+  star_.clear();
+  mesh_.tets_of(v, star_);
+  if (star_.empty()) return false;
+  const int marker = mesh_.tet_marker(star_.front());
+  if (!mesh_.one_region() &&
+      !std::all_of(star_.begin(), star_.end(), [&](int t) { return mesh_.tet_marker(t) == marker; }))
+    return false;
+  double old_worst = 0, old_min = 180;
+  int worst_tet = star_.front();
+  for (const int t : star_) {
+    old_worst = std::max(old_worst, mesh_.aspect(t));
+    if (mesh_.dihedral(t) < old_min) {
+      old_min = mesh_.dihedral(t);
+      worst_tet = t;
+    }
+  }
+  // The neighbours (every vertex of the star) and the point they average:
+  // on a facet the boundary neighbours only.
+  ++stamp_;
+  marks_[static_cast<std::size_t>(v)] = stamp_;
+  neighbours_.clear();
+  for (const int t : star_)
+    for (const int x : mesh_.tet(t))
+      if (marks_[static_cast<std::size_t>(x)] != stamp_) {
+        marks_[static_cast<std::size_t>(x)] = stamp_;
+        neighbours_.push_back(x);
+      }
+  const Vec3 p = mesh_.point(v);
+  Vec3 sum{};
+  double count = 0, edge_sum = 0;
+  for (const int x : neighbours_) edge_sum += norm(mesh_.point(x) - p);
+  if (fixed == 3) {
+    for (const int x : neighbours_) sum = sum + mesh_.point(x);
+    count = static_cast<double>(neighbours_.size());
+  } else {
+    faces_.clear();
+    mesh_.faces_of(v, faces_);
+    for (const int f : faces_)
+      for (const int x : mesh_.face(f))
+        if (x != v) sum = sum + 0.5 * mesh_.point(x);  // each boundary neighbour lies on two of v's triangles
+    count = static_cast<double>(faces_.size());
+  }
+  if (count == 0) return false;
+  Vec3 mean = (1.0 / count) * sum;
+  if (fixed < 3) axis_ref(mean, fixed) = axis_coord(p, fixed);
+  const double mean_edge = edge_sum / static_cast<double>(neighbours_.size());
+
+  std::array<Vec3, 3 + kAscentSteps.size()> candidates{};
+  candidates[0] = mean;
+  candidates[1] = p + 0.5 * (mean - p);
+  candidates[2] = p + 0.25 * (mean - p);
+  for (std::size_t i = 0; i < kAscentSteps.size(); ++i) candidates[3 + i] = ascent(v, worst_tet, kAscentSteps[i] * mean_edge);
+  for (Vec3& c : candidates)
+    if (fixed < 3) axis_ref(c, fixed) = axis_coord(p, fixed);  // bit-identical on the facet's plane
+
+  const double limit = std::min(old_worst, cap_);
+  Trial best{p, 0, old_min + kMinDihedralGain};
+  bool found = false;
+  for (const Vec3& q : candidates) {
+    if (q == p) continue;
+    Trial trial{q, limit, 0};
+    if (!evaluate(v, q, trial, aspect_, dihedral_)) continue;
+    if (!(trial.min_dihedral >= best.min_dihedral) || (found && trial.min_dihedral == best.min_dihedral)) continue;
+    if (!within_size(p, q)) continue;
+    best = trial;
+    found = true;
+    std::swap(aspect_, best_aspect_);
+    std::swap(dihedral_, best_dihedral_);
+  }
+  if (!found) return false;
+  mesh_.move_vertex(v, best.q, star_, best_aspect_, best_dihedral_);
+  return true;
+}
+
+}  // namespace pqmesh::improve3d::detail

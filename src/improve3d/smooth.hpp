@@ -1,0 +1,93 @@
+#pragma once
+// Vertex smoothing after the collapses, monotone in quality (improve.hpp,
+// ../shared/IMPROVEMENT.md "The rule that keeps a guarantee").
+//
+// Which vertices move (mobility, computed once from the vertex classes):
+//   * an interior vertex (no boundary triangle) anywhere;
+//   * a vertex inside exactly one facet only when that facet is axis-aligned
+//     (all its PLC vertices share one coordinate bit for bit), and then within
+//     the facet's plane: that coordinate is kept bit-identical, so the vertex
+//     lies exactly on the plane. Its boundary triangles stay on the facet and
+//     still tile the same polygon: each is a face of a star tetrahedron whose
+//     fourth vertex lies off the plane and does not move, so the tetrahedron's
+//     orientation is the triangle's orientation in the plane, and keeping every
+//     tetrahedron positive keeps every triangle's orientation around a fixed
+//     link polygon;
+//   * vertices on input edges, input vertices and vertices on a slanted facet
+//     never (a constructed point would leave the facet's plane).
+// A vertex whose star carries more than one region marker stays.
+//
+// A move of v to q is accepted only when
+//   1. every tetrahedron of the star of v is positively oriented (exact orient3d);
+//   2. the star's worst aspect ratio does not increase and is at most aspect_cap;
+//   3. the star's minimum dihedral angle increases by at least kMinGain degrees
+//      (strict progress: the global minimum dihedral never falls, the global
+//      worst aspect ratio never rises, and the passes end);
+//   4. every edge of v is within the size bound (size_bound.hpp) or no longer
+//      than before.
+// Candidates: the mean of the neighbours (on a facet: of the boundary
+// neighbours, projected), halfway and a quarter of the way there, and steps
+// along the gradient of the worst star tetrahedron's minimum dihedral angle
+// (a construction; it only proposes). The best accepted candidate wins (ties:
+// the first in that order).
+//
+// Order: a pass tries the vertices by their star's minimum dihedral angle,
+// smallest first, ties by id; the first pass tries every movable vertex,
+// later passes only the ones whose star changed (a neighbour moved) since
+// they were last tried -- the outcome of a try depends only on the star, so
+// an unchanged star is refused again. Deterministic: no decision depends on
+// anything but the mesh.
+#include <cstdint>
+#include <vector>
+
+#include "improve3d/collapse_mesh.hpp"
+#include "improve3d/size_bound.hpp"
+#include "improve3d/vertex_classes.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/vec.hpp"
+
+namespace pqmesh::improve3d::detail {
+
+// The least gain of the star's minimum dihedral angle a move must bring (degrees).
+inline constexpr double kMinDihedralGain = 0.01;
+
+// Per vertex: -1 fixed, 3 free, 0..2 moves within the plane where that coordinate is constant.
+std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes);
+
+class Smoother {
+ public:
+  // mesh: after measure_dihedrals().
+  Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const SizeBound& size, double aspect_cap);
+
+  // One pass (see above); returns the number of vertices moved.
+  std::int64_t pass();
+  // Marks the vertices of the tetrahedra `tets` as changed (flips changed their stars).
+  void touched(const std::vector<int>& tets);
+  std::int64_t moved_vertices() const { return moved_vertices_; }  // distinct vertices moved so far
+
+ private:
+  bool try_vertex(int v);
+  struct Trial {
+    Vec3 q;
+    double worst_aspect = 0, min_dihedral = 0;
+  };
+  bool evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect, std::vector<double>& dihedral) const;
+  bool within_size(Vec3 p, Vec3 q) const;
+  double star_min_dihedral(int v);
+  Vec3 ascent(int v, int worst_tet, double step) const;
+
+  CollapseMesh& mesh_;
+  std::vector<std::int8_t> mobility_;
+  const SizeBound& size_;
+  double cap_;
+  std::vector<std::int64_t> changed_at_, tried_at_;
+  std::int64_t clock_ = 1, moved_vertices_ = 0;
+  std::vector<std::uint8_t> moved_;
+  bool first_pass_ = true;
+  std::vector<int> star_, faces_, neighbours_;
+  std::vector<std::uint64_t> marks_;
+  std::uint64_t stamp_ = 0;
+  std::vector<double> aspect_, dihedral_, best_aspect_, best_dihedral_;
+};
+
+}  // namespace pqmesh::improve3d::detail

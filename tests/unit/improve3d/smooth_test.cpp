@@ -1,0 +1,183 @@
+// The passes after the collapses (src/improve3d/smooth.hpp, flips.hpp) on
+// the inputs of improve_test.cpp: each model is coarsened once with the
+// collapses alone (smooth and flip off) and once with everything. With
+// everything the mesh passes check_mesh, its worst aspect ratio stays within
+// the cap and is no worse than after the collapses alone, its minimum
+// dihedral angle is at least the one after the collapses alone, a second run
+// gives identical arrays, the collapses are the same, and only movable
+// vertices moved: interior vertices, and vertices inside one axis-aligned
+// facet within its plane; every other boundary vertex is bit-identical.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "improve3d/improve.hpp"
+#include "improve_support.hpp"
+#include "pqmesh/check.hpp"
+#include "pqmesh/domain.hpp"
+#include "pqmesh/read_domain.hpp"
+#include "pqmesh/tetmesh.hpp"
+#include "support/paths.hpp"
+#include "support/random_domains.hpp"
+
+namespace pqmesh {
+namespace {
+
+using improve3d::ImproveOptions;
+using improve3d::ImproveStats;
+
+Domain3 corpus(const std::string& name) { return make_domain(read_plc(test::data_path("3d/" + name))); }
+
+struct Improved {
+  TetMesh3 mesh;
+  std::vector<int> face_facets;
+  ImproveStats stats;
+};
+
+Improved run(const Domain3& d, const TetMesh3& mesh, const std::vector<int>& facets, const ImproveOptions& options) {
+  Improved r{mesh, facets, {}};
+  r.stats = improve3d::improve_mesh(d, r.mesh, r.face_facets, options);
+  return r;
+}
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// The axis whose coordinate all PLC vertices of facet f share bit for bit, or -1.
+int facet_axis(const Domain3& d, int f) {
+  for (int axis = 0; axis < 3; ++axis) {
+    bool same = true;
+    const double c = axis_coord(d.plc.vertices[static_cast<std::size_t>(d.plc.facets[static_cast<std::size_t>(f)].loops[0][0])], axis);
+    for (const auto& loop : d.plc.facets[static_cast<std::size_t>(f)].loops)
+      for (const int x : loop) same = same && same_bits(c, axis_coord(d.plc.vertices[static_cast<std::size_t>(x)], axis));
+    if (same) return axis;
+  }
+  return -1;
+}
+
+struct Moves {
+  std::int64_t interior = 0, on_facet = 0;
+};
+
+// Every vertex of `smoothed` that differs from `collapsed` (same vertices in
+// the same order: the later passes delete none) is interior, or lies inside one
+// axis-aligned facet and kept that coordinate bit for bit.
+Moves expect_only_movable_moved(const Domain3& d, const Improved& collapsed, const Improved& smoothed, const std::string& what) {
+  Moves moves;
+  EXPECT_EQ(collapsed.mesh.vertices.size(), smoothed.mesh.vertices.size()) << what;
+  if (collapsed.mesh.vertices.size() != smoothed.mesh.vertices.size()) return moves;
+  std::vector<std::vector<int>> facets(smoothed.mesh.vertices.size());
+  for (std::size_t f = 0; f < smoothed.mesh.faces.size(); ++f)
+    for (const int v : smoothed.mesh.faces[f]) facets[static_cast<std::size_t>(v)].push_back(smoothed.face_facets[f]);
+  for (std::size_t v = 0; v < smoothed.mesh.vertices.size(); ++v) {
+    const Vec3 a = collapsed.mesh.vertices[v], b = smoothed.mesh.vertices[v];
+    const bool moved = !(same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z));
+    if (!moved) continue;
+    auto& fs = facets[v];
+    std::sort(fs.begin(), fs.end());
+    fs.erase(std::unique(fs.begin(), fs.end()), fs.end());
+    if (fs.empty()) {
+      ++moves.interior;
+      continue;
+    }
+    ++moves.on_facet;
+    EXPECT_EQ(fs.size(), 1u) << what << ": vertex " << v << " on several facets moved";
+    if (fs.size() != 1) continue;
+    const int axis = facet_axis(d, fs[0]);
+    EXPECT_GE(axis, 0) << what << ": vertex " << v << " on slanted facet " << fs[0] << " moved";
+    if (axis >= 0) {
+      EXPECT_TRUE(same_bits(axis_coord(a, axis), axis_coord(b, axis))) << what << ": vertex " << v << " left its plane";
+    }
+  }
+  return moves;
+}
+
+void expect_better_than_collapses(const std::string& what, const Domain3& d, const TetMesh3& mesh,
+                                  ImproveOptions options = {}) {
+  const std::vector<int> facets = test::facets_of_faces(d, mesh);
+  options.aspect_cap = test::figures(mesh).worst_aspect;
+  ImproveOptions only = options;
+  only.smooth = false;
+  const Improved collapsed = run(d, mesh, facets, only);
+  const Improved full = run(d, mesh, facets, options);
+  const CheckReport report = check_mesh(full.mesh, d);
+  EXPECT_TRUE(report.valid()) << what << ": " << report.to_text();
+  const test::MeshFigures c = test::figures(collapsed.mesh), f = test::figures(full.mesh);
+  EXPECT_LE(f.worst_aspect, options.aspect_cap) << what;
+  EXPECT_LE(f.worst_aspect, c.worst_aspect) << what;
+  EXPECT_GE(f.min_dihedral, c.min_dihedral) << what;
+  EXPECT_EQ(full.stats.min_dihedral_collapsed, c.min_dihedral) << what;
+  EXPECT_EQ(full.stats.min_dihedral_after, f.min_dihedral) << what;
+  EXPECT_EQ(full.stats.worst_aspect_after, f.worst_aspect) << what;
+  EXPECT_EQ(full.stats.collapses, collapsed.stats.collapses) << what;
+  EXPECT_EQ(collapsed.stats.smoothed, 0) << what;
+  const Moves moves = expect_only_movable_moved(d, collapsed, full, what);
+  EXPECT_EQ(moves.interior + moves.on_facet, full.stats.smoothed) << what;
+  const Improved again = run(d, mesh, facets, options);
+  EXPECT_TRUE(again.mesh.vertices == full.mesh.vertices) << what;
+  EXPECT_TRUE(again.mesh.tetrahedra == full.mesh.tetrahedra) << what;
+  EXPECT_TRUE(again.mesh.faces == full.mesh.faces) << what;
+  EXPECT_TRUE(again.face_facets == full.face_facets) << what;
+  std::printf("%-20s tets %7lld  min dihedral %6.2f (input) %6.2f (collapses) -> %6.2f (smoothed %lld: %lld interior, %lld "
+              "facet)  aspect %7.3f -> %7.3f  %.3f s (collapses alone %.3f s)\n",
+              what.c_str(), static_cast<long long>(f.tetrahedra), full.stats.min_dihedral_before, c.min_dihedral,
+              f.min_dihedral, static_cast<long long>(full.stats.smoothed), static_cast<long long>(moves.interior),
+              static_cast<long long>(moves.on_facet), c.worst_aspect, f.worst_aspect, full.stats.seconds,
+              collapsed.stats.seconds);
+}
+
+class CorpusSmoothing : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CorpusSmoothing, ValidNoWorseThanCollapsesAloneOnlyMovableVerticesMoved) {
+  const Domain3 d = corpus(GetParam());
+  const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
+  ASSERT_TRUE(check_mesh(r.mesh, d).valid());
+  expect_better_than_collapses(GetParam(), d, r.mesh);
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusSmoothing,
+                         ::testing::Values("cube.poly", "l_block.poly", "schoenhardt.poly", "tuning_fork.poly",
+                                           "cube_cavity.poly"));
+
+TEST(RandomSmoothing, EveryRunSeedsValidNoWorseThanCollapsesAlone) {
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const Domain3 d = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
+    const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
+    ASSERT_TRUE(check_mesh(r.mesh, d).valid()) << seed;
+    expect_better_than_collapses("seed " + std::to_string(seed), d, r.mesh);
+  }
+}
+
+// With a size bound, smoothing makes no edge longer than the bound allows.
+TEST(SizeBoundSmoothing, LongestEdgeWithinTheMaxSizeBound) {
+  const Domain3 d = corpus("l_block.poly");
+  TetMeshOptions mo;
+  mo.max_size = 0.25;
+  const TetMeshResult r = tet_mesh(d, test::construction_only(mo));
+  ImproveOptions o;
+  o.max_size = mo.max_size;
+  expect_better_than_collapses("l_block max 0.25", d, r.mesh, o);
+  o.aspect_cap = test::figures(r.mesh).worst_aspect;
+  const Improved full = run(d, r.mesh, test::facets_of_faces(d, r.mesh), o);
+  const double bound = std::max(test::figures(r.mesh).longest_edge, std::sqrt(3.0) * o.max_size);
+  EXPECT_LE(test::figures(full.mesh).longest_edge, bound);
+}
+
+TEST(SizeBoundSmoothing, SizeFieldPoint) {
+  const Domain3 d = corpus("cube.poly");
+  TetMeshOptions mo;
+  mo.max_size = 0.125;
+  const TetMeshResult r = tet_mesh(d, test::construction_only(mo));
+  ImproveOptions o;
+  o.size_points = {d.bbox_min};
+  o.sizes = {0.05};
+  expect_better_than_collapses("cube size point", d, r.mesh, o);
+}
+
+}  // namespace
+}  // namespace pqmesh
