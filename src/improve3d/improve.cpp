@@ -5,11 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "improve3d/collapse_check.hpp"
 #include "improve3d/collapse_mesh.hpp"
 #include "improve3d/edge_queue.hpp"
+#include "improve3d/flips.hpp"
 #include "improve3d/size_bound.hpp"
 #include "improve3d/smooth.hpp"
 #include "improve3d/vertex_classes.hpp"
@@ -36,6 +38,11 @@ constexpr double kMinYield = 0.02;
 // Smoothing passes: at most kMaxSmoothPasses; each pass after the first tries
 // only vertices whose star changed, and the run stops on a pass that moves nothing.
 constexpr int kMaxSmoothPasses = 6;
+// Rounds of smoothing then flips (at most kMaxFlipPasses passes, until one
+// flips nothing); the next round smooths only around the new tetrahedra. The
+// run ends after a round that flips nothing, or after kMaxRounds.
+constexpr int kMaxFlipPasses = 4;
+constexpr int kMaxRounds = 3;
 
 struct PassResult {
   std::int64_t edges = 0, collapses = 0;
@@ -221,10 +228,24 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   }
   work.measure_dihedrals(memo);
   stats.min_dihedral_collapsed = work.min_dihedral();
-  if (options.smooth) {
-    detail::Smoother smoother(work, detail::vertex_mobility(domain, work, classes), size, options.aspect_cap);
-    for (int pass = 0; pass < kMaxSmoothPasses; ++pass)
-      if (smoother.pass() == 0) break;
+  if (options.smooth || options.flip) {
+    std::vector<std::int8_t> mobility;
+    if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
+    detail::Smoother smoother(work, std::move(mobility), size, options.aspect_cap);
+    detail::Flipper flipper(work, options.aspect_cap);
+    for (int round = 0; round < kMaxRounds; ++round) {
+      for (int pass = 0; options.smooth && pass < kMaxSmoothPasses; ++pass)
+        if (smoother.pass() == 0) break;
+      std::int64_t flipped = 0;
+      for (int pass = 0; options.flip && pass < kMaxFlipPasses; ++pass) {
+        const std::int64_t done = flipper.pass();
+        if (done == 0) break;
+        flipped += done;
+        smoother.touched(flipper.created());
+      }
+      stats.flips += flipped;
+      if (flipped == 0) break;
+    }
     stats.smoothed = smoother.moved_vertices();
   }
   stats.min_dihedral_after = work.min_dihedral();

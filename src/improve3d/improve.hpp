@@ -19,12 +19,14 @@
 // mesh's worst never exceeds it, so every bound proved for the construction
 // holds for the result.
 //
-// After the collapses, passes of vertex smoothing (smooth.hpp) raise the
-// minimum dihedral angle: each accepted operation keeps every changed tetrahedron positive
+// After the collapses, passes of vertex smoothing (smooth.hpp) and of 2-3 / 3-2
+// flips of interior faces and edges (flips.hpp) raise the minimum dihedral
+// angle: each accepted operation keeps every changed tetrahedron positive
 // (exact orient3d), does not raise the changed region's worst aspect ratio
 // (and keeps it <= aspect_cap), raises its minimum dihedral angle by a fixed
 // least gain, and keeps the boundary (smoothing moves only interior vertices
-// and vertices inside an axis-aligned facet, within its plane). So the minimum dihedral angle never falls and
+// and vertices inside an axis-aligned facet, within its plane; flips never
+// change a vertex or a boundary triangle). So the minimum dihedral angle never falls and
 // the worst aspect ratio never rises in these passes.
 #include <cstdint>
 #include <limits>
@@ -48,16 +50,17 @@ struct ImproveOptions {
   double max_size = 0;
   std::vector<Vec3> size_points;
   std::vector<double> sizes;
-  // Vertex smoothing after the collapses (see above).
+  // Vertex smoothing and flips after the collapses (see above).
   bool smooth = true;
+  bool flip = true;
 };
 
 struct ImproveStats {
   std::int64_t tetrahedra_before = 0, tetrahedra_after = 0, vertices_before = 0, vertices_after = 0;
   std::int64_t collapses = 0, passes = 0;
   double worst_aspect_before = 0, worst_aspect_after = 0, seconds = 0;
-  // Vertices moved by smoothing (each counted once).
-  std::int64_t smoothed = 0;
+  // Vertices moved by smoothing (each counted once); flips done (2-3 and 3-2).
+  std::int64_t smoothed = 0, flips = 0;
   // Minimum dihedral angle (degrees) of the input mesh, after the collapses, and at the end.
   double min_dihedral_before = 0, min_dihedral_collapsed = 0, min_dihedral_after = 0;
 };
@@ -66,7 +69,8 @@ struct ImproveStats {
 // mesh.face_markers, mesh.tetrahedron_markers; face_facets[i] = the Domain3 facet id (domain.plc.facets index)
 // that boundary triangle i lies on. On return mesh (vertices, tetrahedra, faces, markers) and face_facets
 // describe the coarsened mesh, vertices and tetrahedra renumbered compactly in a deterministic order
-// (the surviving ones in their old order).
+// (the surviving ones in their old order; tetrahedra made by flips after the surviving ones, in
+// creation order).
 // Throws InvalidInput when face_facets or a marker array has the wrong size or a facet id is out of range.
 ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int>& face_facets,
                           const ImproveOptions& options);

@@ -77,7 +77,9 @@ Smoother::Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const 
       changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       tried_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       moved_(static_cast<std::size_t>(mesh.vertex_count()), 0),
-      marks_(static_cast<std::size_t>(mesh.vertex_count()), 0) {}
+      marks_(static_cast<std::size_t>(mesh.vertex_count()), 0) {
+  mobility_.resize(static_cast<std::size_t>(mesh.vertex_count()), -1);  // none given: nothing moves
+}
 
 double Smoother::star_min_dihedral(int v) {
   star_.clear();
@@ -93,7 +95,8 @@ std::int64_t Smoother::pass() {
     const std::size_t x = static_cast<std::size_t>(v);
     if (!mesh_.vertex_alive(v) || mobility_[x] < 0) continue;
     if (!first_pass_ && changed_at_[x] <= tried_at_[x]) continue;
-    order.emplace_back(star_min_dihedral(v), v);
+    const double least = star_min_dihedral(v);
+    if (least < kWorkBelowDihedral) order.emplace_back(least, v);
   }
   first_pass_ = false;
   std::sort(order.begin(), order.end());

@@ -103,8 +103,23 @@ void expect_better_than_collapses(const std::string& what, const Domain3& d, con
   options.aspect_cap = test::figures(mesh).worst_aspect;
   ImproveOptions only = options;
   only.smooth = false;
+  only.flip = false;
   const Improved collapsed = run(d, mesh, facets, only);
+  only.smooth = true;
+  const Improved smoothed = run(d, mesh, facets, only);
+  only.smooth = false;
+  only.flip = true;
+  const Improved flipped = run(d, mesh, facets, only);
   const Improved full = run(d, mesh, facets, options);
+  for (const Improved* r : {&smoothed, &flipped}) {
+    EXPECT_TRUE(check_mesh(r->mesh, d).valid()) << what;
+    EXPECT_LE(r->stats.worst_aspect_after, collapsed.stats.worst_aspect_after) << what;
+    EXPECT_GE(r->stats.min_dihedral_after, collapsed.stats.min_dihedral_after) << what;
+  }
+  EXPECT_EQ(smoothed.stats.flips, 0) << what;
+  EXPECT_EQ(flipped.stats.smoothed, 0) << what;
+  EXPECT_TRUE(flipped.mesh.vertices == collapsed.mesh.vertices) << what;
+  EXPECT_TRUE(flipped.mesh.faces == collapsed.mesh.faces) << what;
   const CheckReport report = check_mesh(full.mesh, d);
   EXPECT_TRUE(report.valid()) << what << ": " << report.to_text();
   const test::MeshFigures c = test::figures(collapsed.mesh), f = test::figures(full.mesh);
@@ -116,6 +131,9 @@ void expect_better_than_collapses(const std::string& what, const Domain3& d, con
   EXPECT_EQ(full.stats.worst_aspect_after, f.worst_aspect) << what;
   EXPECT_EQ(full.stats.collapses, collapsed.stats.collapses) << what;
   EXPECT_EQ(collapsed.stats.smoothed, 0) << what;
+  EXPECT_EQ(collapsed.stats.flips, 0) << what;
+  EXPECT_TRUE(full.mesh.faces == collapsed.mesh.faces) << what;
+  EXPECT_TRUE(full.face_facets == collapsed.face_facets) << what;
   const Moves moves = expect_only_movable_moved(d, collapsed, full, what);
   EXPECT_EQ(moves.interior + moves.on_facet, full.stats.smoothed) << what;
   const Improved again = run(d, mesh, facets, options);
@@ -123,11 +141,14 @@ void expect_better_than_collapses(const std::string& what, const Domain3& d, con
   EXPECT_TRUE(again.mesh.tetrahedra == full.mesh.tetrahedra) << what;
   EXPECT_TRUE(again.mesh.faces == full.mesh.faces) << what;
   EXPECT_TRUE(again.face_facets == full.face_facets) << what;
-  std::printf("%-20s tets %7lld  min dihedral %6.2f (input) %6.2f (collapses) -> %6.2f (smoothed %lld: %lld interior, %lld "
-              "facet)  aspect %7.3f -> %7.3f  %.3f s (collapses alone %.3f s)\n",
-              what.c_str(), static_cast<long long>(f.tetrahedra), full.stats.min_dihedral_before, c.min_dihedral,
-              f.min_dihedral, static_cast<long long>(full.stats.smoothed), static_cast<long long>(moves.interior),
-              static_cast<long long>(moves.on_facet), c.worst_aspect, f.worst_aspect, full.stats.seconds,
+  std::printf("%-17s tets %6lld -> %6lld  min dihedral: input %5.2f, collapses %5.2f, +smooth %5.2f, +flips %5.2f, "
+              "both %5.2f (moved %lld: %lld interior %lld facet; %lld flips)  aspect %7.3f -> %7.3f  %.3f s "
+              "(collapses alone %.3f s)\n",
+              what.c_str(), static_cast<long long>(c.tetrahedra), static_cast<long long>(f.tetrahedra),
+              full.stats.min_dihedral_before, c.min_dihedral, smoothed.stats.min_dihedral_after,
+              flipped.stats.min_dihedral_after, f.min_dihedral, static_cast<long long>(full.stats.smoothed),
+              static_cast<long long>(moves.interior), static_cast<long long>(moves.on_facet),
+              static_cast<long long>(full.stats.flips), c.worst_aspect, f.worst_aspect, full.stats.seconds,
               collapsed.stats.seconds);
 }
 
