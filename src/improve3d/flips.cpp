@@ -49,7 +49,8 @@ std::array<int, 4> ending_with(const std::array<int, 4>& k, int i) {
 
 }  // namespace
 
-Flipper::Flipper(CollapseMesh& mesh, double aspect_cap) : mesh_(mesh), cap_(aspect_cap) {}
+Flipper::Flipper(CollapseMesh& mesh, const SizeBound& size, double aspect_cap)
+    : mesh_(mesh), size_(size), cap_(aspect_cap) {}
 
 std::int64_t Flipper::pass() {
   created_.clear();
@@ -126,6 +127,7 @@ bool Flipper::face_flip(int t, int i, Flip& flip) {
   int e = -1;
   for (const int x : mesh_.tet(other))
     if (x != a && x != b && x != c) e = x;
+  if (size_.bounded() && !size_.allows(mesh_.point(d), mesh_.point(e))) return false;  // rule 4
   flip.old_count = 2;
   flip.old_tets[0] = t;
   flip.old_tets[1] = other;
@@ -144,7 +146,7 @@ bool Flipper::on_boundary(int a, int b, int c) {
                      [&](int f) { return holds(mesh_.face(f), b) && (c < 0 || holds(mesh_.face(f), c)); });
 }
 
-// Rules 1, 3, 4 of flips.hpp and the region part of rule 2.
+// Rules 1, 3, 5 of flips.hpp and the region part of rule 2.
 bool Flipper::measure(Flip& flip) const {
   double old_worst = 0, old_min = 180;
   const int marker = mesh_.tet_marker(flip.old_tets[0]);

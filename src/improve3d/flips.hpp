@@ -16,7 +16,9 @@
 //      boundary triangles never change;
 //   3. the new tetrahedra's worst aspect ratio is at most the old ones' and at
 //      most aspect_cap;
-//   4. their minimum dihedral angle exceeds the old ones' by at least
+//   4. the new edge de of a 2-3 flip is within the size bound (size_bound.hpp;
+//      a 3-2 flip makes no edge);
+//   5. their minimum dihedral angle exceeds the old ones' by at least
 //      kMinDihedralGain (smooth.hpp): strict progress, so the passes end.
 // Order: a pass visits the live tetrahedra whose minimum dihedral angle is
 // below kWorkBelowDihedral (smooth.hpp), smallest first, ties by id; at each it evaluates the 3-2 flips of its six
@@ -28,13 +30,14 @@
 #include <vector>
 
 #include "improve3d/collapse_mesh.hpp"
+#include "improve3d/size_bound.hpp"
 
 namespace pqmesh::improve3d::detail {
 
 class Flipper {
  public:
   // mesh: after measure_dihedrals().
-  Flipper(CollapseMesh& mesh, double aspect_cap);
+  Flipper(CollapseMesh& mesh, const SizeBound& size, double aspect_cap);
 
   // One pass; returns the number of flips.
   std::int64_t pass();
@@ -58,6 +61,7 @@ class Flipper {
   void apply(const Flip& flip);
 
   CollapseMesh& mesh_;
+  const SizeBound& size_;
   double cap_;
   std::array<std::vector<int>, 4> around_;  // tetrahedra of each vertex of the current tetrahedron
   std::vector<int> faces_, created_;

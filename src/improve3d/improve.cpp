@@ -232,7 +232,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
     std::vector<std::int8_t> mobility;
     if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
     detail::Smoother smoother(work, std::move(mobility), size, options.aspect_cap);
-    detail::Flipper flipper(work, options.aspect_cap);
+    detail::Flipper flipper(work, size, options.aspect_cap);
     for (int round = 0; round < kMaxRounds; ++round) {
       for (int pass = 0; options.smooth && pass < kMaxSmoothPasses; ++pass)
         if (smoother.pass() == 0) break;
