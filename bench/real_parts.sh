@@ -303,6 +303,7 @@ for model in "${models[@]}"; do
   else
     rows+=("$name	$n_faces	$pq_out	$pq_s	$pq_mib	$pq_tets	$pq_aspect	$pq_dih	$pq_octree	$reason")
   fi
+  printf '  %s\n' "${rows[-1]}" >&2  # the row as soon as it is known (stderr)
   ((keep)) || rm -rf "$dir"  # meshes of large models add up
 done
 

@@ -124,10 +124,10 @@ void print_improve_line(const TetMesh3& mesh, const TetMeshStats& s, const Mesh3
     std::cout << "off (--no-improve)\n";
     return;
   }
-  std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect)
-            << "): tetrahedra " << s.constructed_tetrahedra << " -> " << mesh.tetrahedra.size()
-            << ", max aspect ratio " << fmt4(s.constructed_max_aspect) << " -> " << fmt4(s.max_aspect)
-            << ", dihedral min " << fmt4(s.constructed_min_dihedral) << " deg before\n";
+  std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect) << "), "
+            << s.smoothed << " vertices smoothed, " << s.flips << " flips: tetrahedra " << s.constructed_tetrahedra
+            << " -> " << mesh.tetrahedra.size() << ", max aspect ratio " << fmt4(s.constructed_max_aspect) << " -> "
+            << fmt4(s.max_aspect) << ", dihedral min " << fmt4(s.constructed_min_dihedral) << " deg before\n";
   if (!s.improve_failure.empty())
     std::cout << "warning    the improved mesh failed the checker, the construction's mesh is written: "
               << s.improve_failure << "\n";

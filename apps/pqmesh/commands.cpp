@@ -82,7 +82,7 @@ const std::vector<Command>& commands() {
        "                       it, never raising its worst aspect ratio, keeping every input vertex,\n"
        "                       edge, facet and marker and the size asked for\n"
        "  --target-aspect A    3D: a collapse may leave the tetrahedra it changes as bad as the worse\n"
-       "                       of their worst before and aspect ratio A (default 6; at least 3)\n"
+       "                       of their worst before and aspect ratio A (default 8; at least 3)\n"
        "  --no-boundary-steiner  2D: triangulate adding points only strictly inside the polygon\n"
        "                       (thesis ch. 5, docs/algorithm/nosteiner2d.md): every input vertex and\n"
        "                       segment is kept exactly, also a subdivided boundary with straight angles (local\n"

@@ -98,15 +98,16 @@ struct TetMeshOptions {
   // Warping of §4.3, both passes, for every box kind (tet3d/warp.hpp).
   bool warp = true;
   TetSeparation separation = TetSeparation::Adaptive;
-  // Coarsening after the construction (docs/algorithm/improve3d.md): edge
-  // collapses that never raise the worst aspect ratio above the
-  // construction's, keep input vertices, edges, facets and markers, and
-  // respect max_size / size_field. CLI --no-improve sets false.
+  // Improvement after the construction (docs/algorithm/improve3d.md): edge
+  // collapses, then vertex smoothing and 2-3 / 3-2 flips, none of which
+  // raises the worst aspect ratio above the construction's; input vertices,
+  // edges, facets and markers are kept and max_size / size_field respected.
+  // CLI --no-improve sets false.
   bool improve = true;
   // A collapse may leave the tetrahedra it changes as bad as the worse of
   // their worst before and this aspect ratio (3: the regular tetrahedron).
   // Larger: fewer tetrahedra, worse typical shapes. CLI --target-aspect.
-  double target_aspect = 6;
+  double target_aspect = 8;
   // Called at phase boundaries (may be empty).
   std::function<void(const TetMeshProgress&)> progress;
 };
@@ -160,11 +161,12 @@ struct TetMeshStats {
   double max_aspect = 0;  // of the returned mesh (tetrahedron_quality)
   // The construction's mesh before improvement: tetrahedra, worst aspect
   // ratio, dihedral extremes (degrees); and the improvement's collapses,
-  // time and, when the improved mesh failed the checker (then the
-  // construction's mesh is returned), the checker's first line.
+  // vertices moved by smoothing, flips, time and, when the improved mesh
+  // failed the checker (then the construction's mesh is returned), the
+  // checker's first line.
   std::int64_t constructed_tetrahedra = 0;
   double constructed_max_aspect = 0, constructed_min_dihedral = 0, constructed_max_dihedral = 0;
-  std::int64_t collapses = 0;
+  std::int64_t collapses = 0, smoothed = 0, flips = 0;
   double seconds_improve = 0;
   std::string improve_failure;
   int depth = 0;                                          // deepest leaf level

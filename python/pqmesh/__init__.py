@@ -103,7 +103,7 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,
                    domain=None, max_size=None, size_field=None, aligned_grid=False, warp=True,
-                   full_separation=False, improve=True, target_aspect=6.0):
+                   full_separation=False, improve=True, target_aspect=8.0):
     """Mesh a polyhedral domain (`pqmesh mesh` on a 3D input); returns a TetMesh.
 
     points (N, 3); facets: a list of polygons, each a list of vertex ids (or a list

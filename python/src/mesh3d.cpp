@@ -30,6 +30,7 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("light_rejected") = s.light_rejected,
                   py::arg("constructed_tetrahedra") = s.constructed_tetrahedra,
                   py::arg("constructed_max_aspect") = s.constructed_max_aspect, py::arg("collapses") = s.collapses,
+                  py::arg("smoothed") = s.smoothed, py::arg("flips") = s.flips,
                   py::arg("improve_failure") = s.improve_failure,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));

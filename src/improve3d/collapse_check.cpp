@@ -235,11 +235,13 @@ bool Collapser::no_duplicate_face() const {
   return true;
 }
 
-// Rule 5: every new edge vx (x a neighbour of u, not of v) within the bound.
+// Rule 5: every moved tetrahedron within the bound.
 bool Collapser::within_size() const {
   if (!size_.bounded()) return true;
-  for (const int x : near_u_list_)
-    if (is_new_neighbour(x) && !size_.allows(mesh_.point(v_), mesh_.point(x))) return false;
+  for (const int t : moving_) {
+    const auto k = moved(t);
+    if (!size_.allows({mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])})) return false;
+  }
   return true;
 }
 

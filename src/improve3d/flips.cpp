@@ -127,7 +127,6 @@ bool Flipper::face_flip(int t, int i, Flip& flip) {
   int e = -1;
   for (const int x : mesh_.tet(other))
     if (x != a && x != b && x != c) e = x;
-  if (size_.bounded() && !size_.allows(mesh_.point(d), mesh_.point(e))) return false;  // rule 4
   flip.old_count = 2;
   flip.old_tets[0] = t;
   flip.old_tets[1] = other;
@@ -158,8 +157,9 @@ bool Flipper::measure(Flip& flip) const {
   }
   for (int n = 0; n < flip.count; ++n) {
     const auto& k = flip.tets[static_cast<std::size_t>(n)];
-    if (orient3d(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])) != Sign::Positive)
-      return false;
+    const std::array<Vec3, 4> p = {mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])};
+    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+    if (size_.bounded() && !size_.allows(p)) return false;  // rule 4
   }
   const double limit = std::min(old_worst, cap_);
   flip.worst_aspect = 0;

@@ -16,8 +16,7 @@
 //      boundary triangles never change;
 //   3. the new tetrahedra's worst aspect ratio is at most the old ones' and at
 //      most aspect_cap;
-//   4. the new edge de of a 2-3 flip is within the size bound (size_bound.hpp;
-//      a 3-2 flip makes no edge);
+//   4. every new tetrahedron is within the size bound (size_bound.hpp);
 //   5. their minimum dihedral angle exceeds the old ones' by at least
 //      kMinDihedralGain (smooth.hpp): strict progress, so the passes end.
 // Order: a pass visits the live tetrahedra whose minimum dihedral angle is

@@ -14,7 +14,8 @@
 //   4. the worst aspect ratio of the changed region (the tetrahedra of v
 //      after) is at most min(aspect_cap, max(old region worst, target_aspect)),
 //      the old region being the tetrahedra of u and v before;
-//   5. no new edge is longer than the size bound.
+//   5. every new tetrahedron's longest edge is within the size bound
+//      (size_bound.hpp: sqrt(3) times the size asked at its centroid).
 // With aspect_cap = the construction's worst aspect ratio, the coarsened
 // mesh's worst never exceeds it, so every bound proved for the construction
 // holds for the result.
@@ -45,8 +46,9 @@ struct ImproveOptions {
   // A collapse may raise the worst aspect ratio of the region it changes up to
   // max(the old region's worst, target_aspect), never above aspect_cap.
   double target_aspect = 6.0;
-  // Size bound (the user's --max-size and size field): a collapse is refused if a new edge is longer than
-  // sqrt(3) * min(max_size, min_i sizes[i] + |m - points[i]|) at its midpoint m (max_size 0 and no points: no bound).
+  // Size bound (the user's --max-size and size field): an operation is refused if a new tetrahedron's longest
+  // edge exceeds sqrt(3) * min(max_size, min_i sizes[i] + |g - points[i]|) at its centroid g (max_size 0 and
+  // no points: no bound).
   double max_size = 0;
   std::vector<Vec3> size_points;
   std::vector<double> sizes;

@@ -1,11 +1,12 @@
 #pragma once
 // Rule 5 of improve.hpp: the user's size function (thesis §1.1, as for
-// tet_mesh) h(x) = min(max_size, min_i sizes[i] + |x - points[i]|); an edge
-// pq may be created only when |q - p| <= sqrt(3) h(m), m its midpoint (the
-// diagonal of a box of side h). A floating-point threshold: it only refuses
-// collapses, and every outcome is a valid mesh (docs/DESIGN_RULES.md "Exact
-// decisions").
+// tet_mesh) h(x) = min(max_size, min_i sizes[i] + |x - points[i]|); a
+// tetrahedron may be made only when its longest edge is at most sqrt(3) h(g),
+// g its centroid (the diagonal of a box of side h: what the construction's
+// tetrahedra meet). A floating-point threshold: it only refuses operations,
+// and every outcome is a valid mesh (docs/DESIGN_RULES.md "Exact decisions").
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -22,11 +23,18 @@ class SizeBound {
 
   bool bounded() const { return max_size_ < std::numeric_limits<double>::infinity() || !points_.empty(); }
 
-  bool allows(Vec3 p, Vec3 q) const {
-    const Vec3 m = 0.5 * (p + q);
+  bool allows(const std::array<Vec3, 4>& t) const {
+    const Vec3 g = 0.25 * (t[0] + t[1] + t[2] + t[3]);
     double h = max_size_;
-    for (std::size_t i = 0; i < points_.size(); ++i) h = std::min(h, sizes_[i] + norm(m - points_[i]));
-    return norm(q - p) <= std::sqrt(3.0) * h;
+    for (std::size_t i = 0; i < points_.size(); ++i) h = std::min(h, sizes_[i] + norm(g - points_[i]));
+    return longest_edge(t) <= std::sqrt(3.0) * h;
+  }
+
+  static double longest_edge(const std::array<Vec3, 4>& t) {
+    double longest = 0;
+    for (std::size_t a = 0; a < 4; ++a)
+      for (std::size_t b = a + 1; b < 4; ++b) longest = std::max(longest, norm(t[a] - t[b]));
+    return longest;
   }
 
  private:

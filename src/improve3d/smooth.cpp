@@ -146,12 +146,16 @@ bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect
   return true;
 }
 
-// Rule 4 of smooth.hpp for the edge from v (moving from p to q) to each neighbour.
-bool Smoother::within_size(Vec3 p, Vec3 q) const {
+// Rule 4 of smooth.hpp for every tetrahedron of v's star with v moved from p
+// to q (one already beyond the bound at p may stay beyond it if its longest
+// edge does not grow).
+bool Smoother::within_size(int v, Vec3 p, Vec3 q) const {
   if (!size_.bounded()) return true;
-  for (const int x : neighbours_) {
-    const Vec3 r = mesh_.point(x);
-    if (!size_.allows(q, r) && norm(r - q) > norm(r - p)) return false;
+  for (const int t : star_) {
+    const auto after = corners(mesh_, mesh_.tet(t), v, q);
+    if (size_.allows(after)) continue;
+    const auto before = corners(mesh_, mesh_.tet(t), v, p);
+    if (size_.allows(before) || SizeBound::longest_edge(after) > SizeBound::longest_edge(before)) return false;
   }
   return true;
 }
@@ -242,7 +246,7 @@ bool Smoother::try_vertex(int v) {
     Trial trial{q, limit, 0};
     if (!evaluate(v, q, trial, aspect_, dihedral_)) continue;
     if (!(trial.min_dihedral >= best.min_dihedral) || (found && trial.min_dihedral == best.min_dihedral)) continue;
-    if (!within_size(p, q)) continue;
+    if (!within_size(v, p, q)) continue;
     best = trial;
     found = true;
     std::swap(aspect_, best_aspect_);

@@ -23,8 +23,9 @@
 //   3. the star's minimum dihedral angle increases by at least kMinGain degrees
 //      (strict progress: the global minimum dihedral never falls, the global
 //      worst aspect ratio never rises, and the passes end);
-//   4. every edge of v is within the size bound (size_bound.hpp) or no longer
-//      than before.
+//   4. every tetrahedron of the star is within the size bound
+//      (size_bound.hpp), or was already beyond it before the move and its
+//      longest edge does not grow.
 // Candidates: the mean of the neighbours (on a facet: of the boundary
 // neighbours, projected), halfway and a quarter of the way there, and steps
 // along the gradient of the worst star tetrahedron's minimum dihedral angle
@@ -79,7 +80,7 @@ class Smoother {
     double worst_aspect = 0, min_dihedral = 0;
   };
   bool evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect, std::vector<double>& dihedral) const;
-  bool within_size(Vec3 p, Vec3 q) const;
+  bool within_size(int v, Vec3 p, Vec3 q) const;
   double star_min_dihedral(int v);
   Vec3 ascent(int v, int worst_tet, double step) const;
 

@@ -111,8 +111,8 @@ std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions
   return std::nullopt;
 }
 
-// The improvement stage (TetMeshOptions::improve): edge collapses capped by
-// the construction's worst aspect ratio, so the bound the construction met
+// The improvement stage (TetMeshOptions::improve): edge collapses, smoothing
+// and flips capped by the construction's worst aspect ratio, so the bound the construction met
 // still holds. The improved mesh is checked; if the checker rejects it, the
 // failure is recorded and the construction is rebuilt unimproved (same input,
 // same options: the same mesh).
@@ -131,6 +131,8 @@ void improve(const Domain3& domain, const TetMeshOptions& options, Construction&
   io.sizes = options.size_field.sizes;
   const improve3d::ImproveStats is = improve3d::improve_mesh(domain, c.result.mesh, c.face_facets, io);
   s.collapses = is.collapses;
+  s.smoothed = is.smoothed;
+  s.flips = is.flips;
   s.seconds_improve = is.seconds;
   s.max_aspect = is.worst_aspect_after;
   const CheckReport check = check_mesh(c.result.mesh, domain);
