@@ -11,7 +11,7 @@
 // triangles (faces of exactly one tetrahedron) with the marker of the input
 // facet each lies on.
 //
-// On the generic grid every leaf kind becomes tetrahedra (tet3d/box_jobs.hpp),
+// On the generic grid every leaf kind becomes tetrahedra (tet3d/boxes/box_jobs.hpp),
 // warped (§4.3); the aspect ratio bound of Theorem 7 holds with the measured
 // constant below, not a proved one. A configuration the box code does not
 // cover (box_jobs' problems, e.g. a second component inside a united
@@ -19,7 +19,7 @@
 // returned, never a partial mesh. On the aligned grid (generic_grid = false)
 // only empty and facet boxes are meshed: a domain whose facets all lie on box
 // planes (a box-aligned cube, the L-block) is the union of "flush" leaves
-// (tet3d/empty_boxes.hpp) and meshes completely.
+// (tet3d/boxes/empty_boxes.hpp) and meshes completely.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -95,7 +95,7 @@ struct TetMeshOptions {
   // (docs/algorithm/octree3d.md "Generic grid"); false: the aligned grid. CLI
   // --aligned-grid sets false.
   bool generic_grid = true;
-  // Warping of §4.3, both passes, for every box kind (tet3d/warp.hpp).
+  // Warping of §4.3, both passes, for every box kind (tet3d/warp/warp.hpp).
   bool warp = true;
   TetSeparation separation = TetSeparation::Adaptive;
   // Improvement after the construction (docs/algorithm/improve3d.md): edge

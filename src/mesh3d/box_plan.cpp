@@ -6,9 +6,9 @@
 
 #include "pqmesh/domain.hpp"
 #include "pqmesh/tetmesh.hpp"
-#include "tet3d/box_jobs.hpp"
-#include "tet3d/empty_boxes.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
+#include "tet3d/boxes/empty_boxes.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::mesh3d {
 

@@ -5,7 +5,7 @@
 //
 // Rules, per leaf in id order (deterministic):
 //   no component (the cube misses P)           -> skipped;
-//   flush inside (tet3d/empty_boxes.hpp)       -> empty box: P faces touch the
+//   flush inside (tet3d/boxes/empty_boxes.hpp) -> empty box: P faces touch the
 //                                                 cube only on its boundary and
 //                                                 the open cube lies in P;
 //   touching outside                           -> skipped: P faces touch the
@@ -46,7 +46,7 @@ struct BoxPlan {
 // order) of a kind other than empty or facet box.
 BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder);
 
-// Every kind (tet3d/box_jobs.hpp: empty, facet, edge, united vertex boxes,
+// Every kind (tet3d/boxes/box_jobs.hpp: empty, facet, edge, united vertex boxes,
 // two-facet), for octrees on the generic grid. Leaves box_jobs cannot cover
 // (its `problems`) throw MeshNotSupported listing the first of them, with
 // every such leaf in ids().

@@ -9,7 +9,7 @@
 #include "mesh3d/boundary_faces.hpp"
 #include "mesh3d/box_plan.hpp"
 #include "mv3d/octree_builder.hpp"
-#include "tet3d/box_faces.hpp"
+#include "tet3d/squares/box_faces.hpp"
 #include "tet3d/facet_boxes.hpp"
 
 namespace pqmesh::mesh3d {
@@ -50,7 +50,7 @@ mv3d::OctreeOptions octree_options(const TetMeshOptions& options, const OctreeVa
 }
 
 // The box jobs (aligned grid: empty and facet boxes, flush leaves as empty
-// boxes; generic grid: every kind, tet3d/box_jobs.hpp), or nothing when some
+// boxes; generic grid: every kind, tet3d/boxes/box_jobs.hpp), or nothing when some
 // leaf has no job on an octree lighter than the thesis's (c.unsupported).
 std::optional<BoxPlan> plan_jobs(const mv3d::OctreeBuilder& builder, const TetMeshOptions& options,
                                  const OctreeVariant& variant, Construction& c) {

@@ -25,7 +25,7 @@
 //    twice (loops touching, which check_facets refuses). The flat edges left
 //    (these, and those between facets with different markers) stay edges of
 //    the domain; the tetrahedral mesher recovers them as 180-degree edges
-//    (EdgeCone's flat form, tet3d/cut_square_edge.hpp).
+//    (EdgeCone's flat form, tet3d/squares/cut_square_edge.hpp).
 //
 // The merged facet takes the place of the group's smallest facet id (the
 // other members are removed and later ids shift down); its file line is that

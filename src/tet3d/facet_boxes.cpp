@@ -9,14 +9,14 @@
 #include <utility>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_assembler.hpp"
-#include "tet3d/free_heap.hpp"
-#include "tet3d/job_runs.hpp"
-#include "tet3d/tet_shape.hpp"
-#include "tet3d/trial_scope.hpp"
-#include "tet3d/warp.hpp"
-#include "tet3d/warp_candidates.hpp"
-#include "tet3d/worst_box_freeze.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
+#include "tet3d/rebuild/free_heap.hpp"
+#include "tet3d/rebuild/job_runs.hpp"
+#include "tet3d/boxes/tet_shape.hpp"
+#include "tet3d/rebuild/trial_scope.hpp"
+#include "tet3d/warp/warp.hpp"
+#include "tet3d/warp/warp_candidates.hpp"
+#include "tet3d/rebuild/worst_box_freeze.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -63,10 +63,10 @@
 
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/square_cases.hpp"
-#include "tet3d/vertex_key.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/squares/square_cases.hpp"
+#include "tet3d/points/vertex_key.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 

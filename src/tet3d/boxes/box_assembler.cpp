@@ -1,14 +1,14 @@
 // BoxAssembler: empty boxes (§4.5.1), checked tetrahedra, reports for the rebuild loop.
-#include "tet3d/box_assembler.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <string>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/cut_square.hpp"
-#include "tet3d/tet_shape.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/squares/cut_square.hpp"
+#include "tet3d/boxes/tet_shape.hpp"
+#include "tet3d/warp/warp.hpp"
 
 namespace pqmesh::tet3d {
 

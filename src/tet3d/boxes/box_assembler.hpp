@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/facet_plane.hpp"
-#include "tet3d/point_book.hpp"
-#include "tet3d/square_cases.hpp"
+#include "tet3d/points/facet_plane.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 namespace pqmesh::tet3d {
 

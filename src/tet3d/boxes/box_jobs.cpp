@@ -1,4 +1,4 @@
-#include "tet3d/box_jobs.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
 
 #include <algorithm>
 #include <string>

@@ -6,9 +6,9 @@
 #include <utility>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_assembler.hpp"
-#include "tet3d/edge_point.hpp"
-#include "tet3d/tet_shape.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
+#include "tet3d/points/edge_point.hpp"
+#include "tet3d/boxes/tet_shape.hpp"
 
 namespace pqmesh::tet3d {
 

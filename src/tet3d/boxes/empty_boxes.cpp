@@ -1,9 +1,9 @@
-#include "tet3d/empty_boxes.hpp"
+#include "tet3d/boxes/empty_boxes.hpp"
 
 #include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/box_faces.hpp"
+#include "tet3d/squares/box_faces.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "mv3d/octree_builder.hpp"
-#include "tet3d/box_faces.hpp"
+#include "tet3d/squares/box_faces.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 

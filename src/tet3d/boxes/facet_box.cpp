@@ -3,8 +3,8 @@
 #include <string>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_assembler.hpp"
-#include "tet3d/tet_shape.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
+#include "tet3d/boxes/tet_shape.hpp"
 
 namespace pqmesh::tet3d {
 

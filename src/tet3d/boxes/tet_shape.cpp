@@ -1,4 +1,4 @@
-#include "tet3d/tet_shape.hpp"
+#include "tet3d/boxes/tet_shape.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_assembler.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -3,7 +3,7 @@
 #include <unordered_map>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_assembler.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
 
 namespace pqmesh::tet3d {
 

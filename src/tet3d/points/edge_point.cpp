@@ -1,4 +1,4 @@
-#include "tet3d/edge_point.hpp"
+#include "tet3d/points/edge_point.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tet3d/facet_plane.hpp"
+#include "tet3d/points/facet_plane.hpp"
 
 #include <cmath>
 #include <limits>

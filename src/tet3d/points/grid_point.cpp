@@ -1,4 +1,4 @@
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 #include <algorithm>
 #include <bit>

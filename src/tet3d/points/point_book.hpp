@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "pqmesh/vec.hpp"
-#include "tet3d/first_use_index.hpp"
-#include "tet3d/vertex_key.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/points/first_use_index.hpp"
+#include "tet3d/points/vertex_key.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -38,7 +38,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -1,4 +1,4 @@
-#include "tet3d/job_runs.hpp"
+#include "tet3d/rebuild/job_runs.hpp"
 
 #include <string>
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <span>
 
-#include "tet3d/box_assembler.hpp"
+#include "tet3d/boxes/box_assembler.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -1,4 +1,4 @@
-#include "tet3d/trial_scope.hpp"
+#include "tet3d/rebuild/trial_scope.hpp"
 
 #include <algorithm>
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/grid_point.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/points/grid_point.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 

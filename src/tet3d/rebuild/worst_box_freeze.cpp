@@ -1,11 +1,11 @@
-#include "tet3d/worst_box_freeze.hpp"
+#include "tet3d/rebuild/worst_box_freeze.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <vector>
 
-#include "tet3d/free_heap.hpp"
-#include "tet3d/warp_candidates.hpp"
+#include "tet3d/rebuild/free_heap.hpp"
+#include "tet3d/warp/warp_candidates.hpp"
 
 namespace pqmesh::tet3d {
 

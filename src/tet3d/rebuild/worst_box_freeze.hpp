@@ -17,9 +17,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "tet3d/job_runs.hpp"
-#include "tet3d/trial_scope.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/rebuild/job_runs.hpp"
+#include "tet3d/rebuild/trial_scope.hpp"
+#include "tet3d/warp/warp.hpp"
 
 namespace pqmesh::tet3d {
 

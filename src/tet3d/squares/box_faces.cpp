@@ -1,9 +1,9 @@
-#include "tet3d/box_faces.hpp"
+#include "tet3d/squares/box_faces.hpp"
 
 #include <algorithm>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/box_jobs.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
 #include "tet3d/facet_boxes.hpp"
 
 namespace pqmesh::tet3d {

@@ -30,8 +30,8 @@
 
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/vec.hpp"
-#include "tet3d/first_use_index.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/first_use_index.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -1,4 +1,4 @@
-#include "tet3d/cut_square.hpp"
+#include "tet3d/squares/cut_square.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -27,10 +27,10 @@
 #include <array>
 #include <vector>
 
-#include "tet3d/box_faces.hpp"
-#include "tet3d/facet_plane.hpp"
-#include "tet3d/point_book.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/points/facet_plane.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/warp/warp.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -1,11 +1,11 @@
-#include "tet3d/cut_square_edge.hpp"
+#include "tet3d/squares/cut_square_edge.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/warped_crossing.hpp"
+#include "tet3d/squares/warped_crossing.hpp"
 
 namespace pqmesh::tet3d {
 

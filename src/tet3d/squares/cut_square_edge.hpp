@@ -56,7 +56,7 @@
 #include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/cut_square.hpp"
+#include "tet3d/squares/cut_square.hpp"
 
 namespace pqmesh::tet3d {
 

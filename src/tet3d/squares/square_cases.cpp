@@ -1,9 +1,9 @@
-#include "tet3d/square_cases.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 #include <algorithm>
 
 #include "pqmesh/errors.hpp"
-#include "tet3d/square_meets.hpp"
+#include "tet3d/squares/square_meets.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -81,12 +81,12 @@
 #include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/cut_square.hpp"
-#include "tet3d/cut_square_edge.hpp"
-#include "tet3d/point_book.hpp"
-#include "tet3d/square_meets.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/squares/cut_square.hpp"
+#include "tet3d/squares/cut_square_edge.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/squares/square_meets.hpp"
+#include "tet3d/warp/warp.hpp"
 
 namespace pqmesh::tet3d {
 

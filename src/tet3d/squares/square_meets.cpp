@@ -1,4 +1,4 @@
-#include "tet3d/square_meets.hpp"
+#include "tet3d/squares/square_meets.hpp"
 
 #include <algorithm>
 

@@ -20,7 +20,7 @@
 #include <array>
 
 #include "pqmesh/vec.hpp"
-#include "tet3d/box_faces.hpp"
+#include "tet3d/squares/box_faces.hpp"
 
 namespace pqmesh::tet3d {
 

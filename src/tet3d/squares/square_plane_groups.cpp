@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "tet3d/square_cases.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 namespace pqmesh::tet3d {
 

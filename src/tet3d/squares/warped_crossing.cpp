@@ -1,8 +1,8 @@
-#include "tet3d/warped_crossing.hpp"
+#include "tet3d/squares/warped_crossing.hpp"
 
 #include <array>
 
-#include "tet3d/edge_point.hpp"
+#include "tet3d/points/edge_point.hpp"
 
 namespace pqmesh::tet3d {
 

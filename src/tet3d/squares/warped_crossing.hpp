@@ -15,8 +15,8 @@
 #include <optional>
 
 #include "pqmesh/vec.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 

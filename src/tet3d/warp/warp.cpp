@@ -1,4 +1,4 @@
-#include "tet3d/warp.hpp"
+#include "tet3d/warp/warp.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "tet3d/cut_square_edge.hpp"
-#include "tet3d/facet_plane.hpp"
+#include "tet3d/squares/cut_square_edge.hpp"
+#include "tet3d/points/facet_plane.hpp"
 
 namespace pqmesh::tet3d {
 

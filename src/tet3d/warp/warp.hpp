@@ -73,10 +73,10 @@
 #include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/point_book.hpp"
-#include "tet3d/warp_candidates.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/warp/warp_candidates.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 

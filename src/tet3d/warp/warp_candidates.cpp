@@ -1,4 +1,4 @@
-#include "tet3d/warp_candidates.hpp"
+#include "tet3d/warp/warp_candidates.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -7,8 +7,8 @@
 
 #include "pqmesh/errors.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/point_book.hpp"
-#include "tet3d/square_cases.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -27,10 +27,10 @@
 #include <vector>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/first_use_index.hpp"
-#include "tet3d/row_builder.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/points/first_use_index.hpp"
+#include "tet3d/warp/row_builder.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 

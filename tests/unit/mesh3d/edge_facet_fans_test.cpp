@@ -1,5 +1,5 @@
 // Edge boxes with flat cones from the apex on E fan F ∩ b and G ∩ b from
-// points of their own facets (src/tet3d/edge_box_fans.cpp). Bounded seed 86
+// points of their own facets (src/tet3d/boxes/edge_box_fans.cpp). Bounded seed 86
 // through tet_mesh's pipeline and check_mesh: some edge box takes the fans
 // and aspect x alpha <= 716.
 #include <gtest/gtest.h>

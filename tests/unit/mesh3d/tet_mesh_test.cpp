@@ -1,5 +1,5 @@
 // tet_mesh (pqmesh/tetmesh.hpp) end to end on the grid-aligned corpus models,
-// which mesh completely today (every leaf meeting P is flush, tet3d/empty_boxes.hpp),
+// which mesh completely today (every leaf meeting P is flush, tet3d/boxes/empty_boxes.hpp),
 // and the clear error for leaf kinds the box tetrahedra do not handle yet.
 #include <gtest/gtest.h>
 #include <unistd.h>

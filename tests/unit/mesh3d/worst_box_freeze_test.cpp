@@ -1,4 +1,4 @@
-// The worst-box freeze (tet3d/worst_box_freeze.hpp): flat-edge seeds 100
+// The worst-box freeze (tet3d/rebuild/worst_box_freeze.hpp): flat-edge seeds 100
 // and 49 (every facet triangle its own facet) are above C without it and
 // within C with it; every-run seed 45, below the threshold, keeps its mesh.
 // Every mesh here passes check_mesh.
@@ -11,7 +11,7 @@
 #include "pqmesh/tetmesh.hpp"
 #include "support/flat_edge_domains.hpp"
 #include "support/random_domains.hpp"
-#include "tet3d/worst_box_freeze.hpp"
+#include "tet3d/rebuild/worst_box_freeze.hpp"
 #include "warped_box_mesh.hpp"
 
 namespace pqmesh {

@@ -3,7 +3,7 @@
 // test, against the independent GMP oracle and against within_ulp_of_plane
 // (eight corners). Inputs: full-precision slanted triangles with points a few
 // ulps around the plane along each axis (the settle search of
-// tet3d/facet_plane.cpp; inexact differences), grid triangles with exactly
+// tet3d/points/facet_plane.cpp; inexact differences), grid triangles with exactly
 // coplanar points, axis-aligned and collinear triangles, zero coordinates,
 // and coordinates outside the stage's range (orient3d decides those).
 #include "predicates/plane_side.hpp"

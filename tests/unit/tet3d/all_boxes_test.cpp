@@ -38,11 +38,11 @@
 #include "support/paths.hpp"
 #include "pqmesh/plc.hpp"
 #include "pqmesh/quality.hpp"
-#include "tet3d/box_jobs.hpp"
-#include "tet3d/cut_square_edge.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
+#include "tet3d/squares/cut_square_edge.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/grid_point.hpp"
-#include "tet3d/square_cases.hpp"
+#include "tet3d/points/grid_point.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

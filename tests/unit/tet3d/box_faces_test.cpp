@@ -15,8 +15,8 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/empty_boxes.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/boxes/empty_boxes.hpp"
 #include "tree/tree.hpp"
 
 namespace pqmesh::tet3d {

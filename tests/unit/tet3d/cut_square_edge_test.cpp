@@ -28,7 +28,7 @@
 #include "pqmesh/domain.hpp"
 #include "predicates/predicates.hpp"
 #include "square_test_util.hpp"
-#include "tet3d/cut_square_edge.hpp"
+#include "tet3d/squares/cut_square_edge.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

@@ -21,7 +21,7 @@
 #include "pqmesh/plc.hpp"
 #include "predicates/predicates.hpp"
 #include "square_test_util.hpp"
-#include "tet3d/cut_square.hpp"
+#include "tet3d/squares/cut_square.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

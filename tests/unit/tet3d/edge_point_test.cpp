@@ -8,7 +8,7 @@
 #include <random>
 
 #include "predicates/predicates.hpp"
-#include "tet3d/edge_point.hpp"
+#include "tet3d/points/edge_point.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

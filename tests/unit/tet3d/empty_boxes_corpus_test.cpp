@@ -32,9 +32,9 @@
 #include "pqmesh/read_domain.hpp"
 #include "predicates/predicates.hpp"
 #include "support/paths.hpp"
-#include "tet3d/empty_boxes.hpp"
+#include "tet3d/boxes/empty_boxes.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/facet_plane.hpp"
+#include "tet3d/points/facet_plane.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

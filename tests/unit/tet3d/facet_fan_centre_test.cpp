@@ -21,7 +21,7 @@
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/facet_plane.hpp"
+#include "tet3d/points/facet_plane.hpp"
 #include "half_space_fixture.hpp"
 
 namespace pqmesh::tet3d {

@@ -1,13 +1,13 @@
-// FirstUseIndex (tet3d/first_use_index.hpp): ids in order of first insertion,
+// FirstUseIndex (tet3d/points/first_use_index.hpp): ids in order of first insertion,
 // whatever the hash and the table growth, and exact lookups.
-#include "tet3d/first_use_index.hpp"
+#include "tet3d/points/first_use_index.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

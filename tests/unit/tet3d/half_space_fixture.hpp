@@ -12,8 +12,8 @@
 #include "pqmesh/plc.hpp"
 #include "pqmesh/vec.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/facet_plane.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/facet_plane.hpp"
+#include "tet3d/points/grid_point.hpp"
 
 namespace pqmesh::tet3d {
 

@@ -13,8 +13,8 @@
 #include <tuple>
 #include <vector>
 
-#include "tet3d/point_book.hpp"
-#include "tet3d/warp_table.hpp"
+#include "tet3d/points/point_book.hpp"
+#include "tet3d/warp/warp_table.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

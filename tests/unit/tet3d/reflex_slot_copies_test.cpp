@@ -20,12 +20,12 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/box_jobs.hpp"
-#include "tet3d/cut_square.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
+#include "tet3d/squares/cut_square.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/facet_plane.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/points/facet_plane.hpp"
+#include "tet3d/warp/warp.hpp"
 #include "tree/tree.hpp"
 
 namespace pqmesh::tet3d {

@@ -14,8 +14,8 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/errors.hpp"
 #include "pqmesh/plc.hpp"
-#include "tet3d/square_cases.hpp"
-#include "tet3d/square_meets.hpp"
+#include "tet3d/squares/square_cases.hpp"
+#include "tet3d/squares/square_meets.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

@@ -11,7 +11,7 @@
 #include "../plc/domain_fixtures.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
-#include "tet3d/square_cases.hpp"
+#include "tet3d/squares/square_cases.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

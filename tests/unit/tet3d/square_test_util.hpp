@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "pqmesh/vec.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/points/grid_point.hpp"
 #include "tree/tree.hpp"
 
 namespace pqmesh::test {

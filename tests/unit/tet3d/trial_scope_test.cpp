@@ -1,7 +1,7 @@
 // The scope of a partial trial of the warp rebuild loop (trial_scope.hpp):
 // which grid points a rebuilt table changed, and which jobs' closed boxes
 // hold them.
-#include "tet3d/trial_scope.hpp"
+#include "tet3d/rebuild/trial_scope.hpp"
 
 #include <gtest/gtest.h>
 

@@ -21,7 +21,7 @@
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
-#include "tet3d/box_jobs.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
 #include "tet3d/facet_boxes.hpp"
 
 namespace pqmesh::tet3d {

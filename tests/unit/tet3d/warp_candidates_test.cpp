@@ -22,11 +22,11 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/read_domain.hpp"
 #include "support/paths.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/box_jobs.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/boxes/box_jobs.hpp"
 #include "tet3d/facet_boxes.hpp"
-#include "tet3d/square_cases.hpp"
-#include "tet3d/warp_candidates.hpp"
+#include "tet3d/squares/square_cases.hpp"
+#include "tet3d/warp/warp_candidates.hpp"
 
 namespace pqmesh::tet3d {
 namespace {

@@ -11,9 +11,9 @@
 #include "pqmesh/domain.hpp"
 #include "pqmesh/plc.hpp"
 #include "predicates/predicates.hpp"
-#include "tet3d/box_faces.hpp"
-#include "tet3d/grid_point.hpp"
-#include "tet3d/warp.hpp"
+#include "tet3d/squares/box_faces.hpp"
+#include "tet3d/points/grid_point.hpp"
+#include "tet3d/warp/warp.hpp"
 #include "tree/tree.hpp"
 #include "warp_test_util.hpp"
 

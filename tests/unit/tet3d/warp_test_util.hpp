@@ -4,7 +4,7 @@
 #include <cstddef>
 
 #include "pqmesh/domain.hpp"
-#include "tet3d/grid_point.hpp"
+#include "tet3d/points/grid_point.hpp"
 #include "tree/tree.hpp"
 
 namespace pqmesh::tet3d {
