@@ -16,6 +16,18 @@ namespace {
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
+// Mobility codes (vertex_mobility): -1 fixed; 0..2 in the plane where that
+// axis's coordinate is fixed; kFree anywhere; kAlongAxis + k only along axis k.
+constexpr int kFree = 3;
+constexpr int kAlongAxis = 4;
+
+bool moves_along(int mobility, int axis) {
+  if (mobility < 0) return false;
+  if (mobility < kFree) return axis != mobility;
+  if (mobility == kFree) return true;
+  return axis == mobility - kAlongAxis;
+}
+
 // The axis whose coordinate every PLC vertex of the facet shares bit for bit; -1 when none.
 int facet_axis(const Domain3& domain, const Facet3& facet) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -33,6 +45,26 @@ int facet_axis(const Domain3& domain, const Facet3& facet) {
   return -1;
 }
 
+// The input edge with facets {f, g} whose line holds p exactly (its end points
+// share two coordinates bit for bit, and so does p): the axis it runs along,
+// or -1 when there is none.
+int edge_axis(const Domain3& domain, int f, int g, Vec3 p) {
+  for (const DomainEdge& e : domain.edges) {
+    const bool pair = (e.facets[0] == f && e.facets[1] == g) || (e.facets[0] == g && e.facets[1] == f);
+    if (!pair) continue;
+    const Vec3 a = domain.plc.vertices[static_cast<std::size_t>(e.a)], b = domain.plc.vertices[static_cast<std::size_t>(e.b)];
+    int along = -1, shared = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const bool same = same_bits(axis_coord(a, axis), axis_coord(b, axis)) &&
+                        same_bits(axis_coord(a, axis), axis_coord(p, axis));
+      if (same) ++shared;
+      else along = axis;
+    }
+    if (shared == 2) return along;
+  }
+  return -1;
+}
+
 std::array<Vec3, 4> corners(const CollapseMesh& mesh, const std::array<int, 4>& k, int v, Vec3 q) {
   std::array<Vec3, 4> p{};
   for (std::size_t i = 0; i < 4; ++i) p[i] = k[i] == v ? q : mesh.point(k[i]);
@@ -42,6 +74,12 @@ std::array<Vec3, 4> corners(const CollapseMesh& mesh, const std::array<int, 4>& 
 double min_dihedral_at(const CollapseMesh& mesh, int t, int v, Vec3 q) {
   const auto p = corners(mesh, mesh.tet(t), v, q);
   return tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_deg;
+}
+
+// Keeps the coordinates a vertex of this mobility may not change at p's.
+void pin(Vec3& q, Vec3 p, int mobility) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (!moves_along(mobility, axis)) axis_ref(q, axis) = axis_coord(p, axis);
 }
 
 // The steps along the ascent direction, in units of the mean edge length of the star.
@@ -60,13 +98,16 @@ std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& me
     mesh.faces_of(v, faces);
     std::int8_t& m = mobility[static_cast<std::size_t>(v)];
     if (classes.of(v) == VertexClass::Interior) {
-      if (faces.empty()) m = 3;
+      if (faces.empty()) m = kFree;
     } else if (classes.of(v) == VertexClass::Facet && !faces.empty()) {
       const int f = classes.facets_of(v)[0];
       const bool one_facet =
           std::all_of(faces.begin(), faces.end(), [&](int b) { return mesh.face_facet(b) == f; });
       if (one_facet && axis[static_cast<std::size_t>(f)] >= 0)
         m = static_cast<std::int8_t>(axis[static_cast<std::size_t>(f)]);
+    } else if (classes.of(v) == VertexClass::Edge && classes.facets_of(v).size() == 2) {
+      const int along = edge_axis(domain, classes.facets_of(v)[0], classes.facets_of(v)[1], mesh.point(v));
+      if (along >= 0) m = static_cast<std::int8_t>(kAlongAxis + along);
     }
   }
   return mobility;
@@ -168,7 +209,7 @@ Vec3 Smoother::ascent(int v, int worst_tet, double step) const {
   const double h = 1e-6 * step;
   Vec3 g{};
   for (int axis = 0; axis < 3; ++axis) {
-    if (axis == fixed) continue;
+    if (!moves_along(fixed, axis)) continue;
     Vec3 plus = p, minus = p;
     axis_ref(plus, axis) += h;
     axis_ref(minus, axis) -= h;
@@ -177,7 +218,7 @@ Vec3 Smoother::ascent(int v, int worst_tet, double step) const {
   const double length = norm(g);
   if (!(length > 0) || !std::isfinite(length)) return p;
   Vec3 q = p + (step / length) * g;
-  if (fixed < 3) axis_ref(q, fixed) = axis_coord(p, fixed);
+  pin(q, p, fixed);
   return q;
 }
 
@@ -214,7 +255,7 @@ bool Smoother::try_vertex(int v) {
   Vec3 sum{};
   double count = 0, edge_sum = 0;
   for (const int x : neighbours_) edge_sum += norm(mesh_.point(x) - p);
-  if (fixed == 3) {
+  if (fixed == kFree) {
     for (const int x : neighbours_) sum = sum + mesh_.point(x);
     count = static_cast<double>(neighbours_.size());
   } else {
@@ -227,7 +268,7 @@ bool Smoother::try_vertex(int v) {
   }
   if (count == 0) return false;
   Vec3 mean = (1.0 / count) * sum;
-  if (fixed < 3) axis_ref(mean, fixed) = axis_coord(p, fixed);
+  pin(mean, p, fixed);
   const double mean_edge = edge_sum / static_cast<double>(neighbours_.size());
 
   std::array<Vec3, 3 + kAscentSteps.size()> candidates{};
@@ -236,7 +277,7 @@ bool Smoother::try_vertex(int v) {
   candidates[2] = p + 0.25 * (mean - p);
   for (std::size_t i = 0; i < kAscentSteps.size(); ++i) candidates[3 + i] = ascent(v, worst_tet, kAscentSteps[i] * mean_edge);
   for (Vec3& c : candidates)
-    if (fixed < 3) axis_ref(c, fixed) = axis_coord(p, fixed);  // bit-identical on the facet's plane
+    pin(c, p, fixed);  // bit-identical on the facet's plane or the edge's line
 
   const double limit = std::min(old_worst, cap_);
   Trial best{p, 0, old_min + kMinDihedralGain};

@@ -13,8 +13,12 @@
 //     orientation is the triangle's orientation in the plane, and keeping every
 //     tetrahedron positive keeps every triangle's orientation around a fixed
 //     link polygon;
-//   * vertices on input edges, input vertices and vertices on a slanted facet
-//     never (a constructed point would leave the facet's plane).
+//   * a vertex on an axis-parallel input edge (its end points share two
+//     coordinates bit for bit, and so does the vertex) only along that axis:
+//     it stays exactly on the edge's line, so on both facets' planes, and its
+//     boundary triangles on either facet keep their orientation as above;
+//   * vertices on other input edges, input vertices and vertices on a slanted
+//     facet never (a constructed point would leave the facet's plane).
 // A vertex whose star carries more than one region marker stays.
 //
 // A move of v to q is accepted only when

@@ -5,8 +5,9 @@
 // the cap and is no worse than after the collapses alone, its minimum
 // dihedral angle is at least the one after the collapses alone, a second run
 // gives identical arrays, the collapses are the same, and only movable
-// vertices moved: interior vertices, and vertices inside one axis-aligned
-// facet within its plane; every other boundary vertex is bit-identical.
+// vertices moved: interior vertices, vertices inside one axis-aligned facet
+// within its plane, and vertices on an axis-parallel input edge along it;
+// every other boundary vertex is bit-identical.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,8 +62,29 @@ int facet_axis(const Domain3& d, int f) {
 }
 
 struct Moves {
-  std::int64_t interior = 0, on_facet = 0;
+  std::int64_t interior = 0, on_facet = 0, on_edge = 0;
 };
+
+// A moved vertex on the input edge between facets f and g: it changed one
+// coordinate only, and that edge runs along that axis through it (its end
+// points share the other two coordinates with the vertex, bit for bit).
+void expect_moved_along_its_edge(const Domain3& d, int f, int g, Vec3 a, Vec3 b, const std::string& what) {
+  int changed = -1, changes = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    if (!same_bits(axis_coord(a, axis), axis_coord(b, axis))) changed = axis, ++changes;
+  EXPECT_EQ(changes, 1) << what << ": an edge vertex changed " << changes << " coordinates";
+  bool on_line = false;
+  for (const DomainEdge& e : d.edges) {
+    if (!((e.facets[0] == f && e.facets[1] == g) || (e.facets[0] == g && e.facets[1] == f))) continue;
+    const Vec3 p = d.plc.vertices[static_cast<std::size_t>(e.a)], q = d.plc.vertices[static_cast<std::size_t>(e.b)];
+    bool all = true;
+    for (int axis = 0; axis < 3; ++axis)
+      if (axis != changed)
+        all = all && same_bits(axis_coord(p, axis), axis_coord(b, axis)) && same_bits(axis_coord(q, axis), axis_coord(b, axis));
+    on_line = on_line || all;
+  }
+  EXPECT_TRUE(on_line) << what << ": an edge vertex left its edge's line";
+}
 
 // Every vertex of `smoothed` that differs from `collapsed` (same vertices in
 // the same order: the later passes delete none) is interior, or lies inside one
@@ -83,6 +105,11 @@ Moves expect_only_movable_moved(const Domain3& d, const Improved& collapsed, con
     fs.erase(std::unique(fs.begin(), fs.end()), fs.end());
     if (fs.empty()) {
       ++moves.interior;
+      continue;
+    }
+    if (fs.size() == 2) {
+      ++moves.on_edge;
+      expect_moved_along_its_edge(d, fs[0], fs[1], a, b, what + ": vertex " + std::to_string(v));
       continue;
     }
     ++moves.on_facet;
@@ -135,7 +162,7 @@ void expect_better_than_collapses(const std::string& what, const Domain3& d, con
   EXPECT_TRUE(full.mesh.faces == collapsed.mesh.faces) << what;
   EXPECT_TRUE(full.face_facets == collapsed.face_facets) << what;
   const Moves moves = expect_only_movable_moved(d, collapsed, full, what);
-  EXPECT_EQ(moves.interior + moves.on_facet, full.stats.smoothed) << what;
+  EXPECT_EQ(moves.interior + moves.on_facet + moves.on_edge, full.stats.smoothed) << what;
   const Improved again = run(d, mesh, facets, options);
   EXPECT_TRUE(again.mesh.vertices == full.mesh.vertices) << what;
   EXPECT_TRUE(again.mesh.tetrahedra == full.mesh.tetrahedra) << what;
