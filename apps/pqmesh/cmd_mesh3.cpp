@@ -205,6 +205,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   for (const char* flag : {"--protect-edges", "--fixed-boundary"})
     if (args.flag(flag)) throw UsageError(std::string(flag) + " is for 2D input only");
   if (args.option("--refine-angle")) throw UsageError("--refine-angle is for 2D input only");
+  if (args.option("--min-angle")) throw UsageError("--min-angle is for --no-boundary-steiner (2D) only");
   Mesh3Run run;
   run.input = args.positional()[0];
   run.output = output_option(args);
