@@ -32,6 +32,12 @@
 namespace pqmesh::cli {
 namespace {
 
+// The largest --min-angle: Delaunay refinement ends in practice up to about
+// 33 degrees (Triangle's and CGAL's limit too); at 34 it already stops at its
+// point cap on the 2D benchmark's generated shapes (the mesh then comes from
+// the quadtree).
+constexpr double kMaxMinAngle = 33;
+
 // Quadrature refinement of the size estimate I(P) (lfs_integral's `refine`),
 // computed on request only (--lfs-integral): it costs more than meshing.
 // Twice the library default 1/8: a quarter of the cells for about 1% change
@@ -59,9 +65,18 @@ struct MeshRun {
   LfsIntegral lfs;
   double seconds_mesh = 0, seconds_check = 0, seconds_lfs = 0;
   // The summary's angle extremes (quality_report's min_angle.min/argmin and
-  // max_angle.max/argmax).
+  // max_angle.max/argmax) and min-angle histogram counts (its 5-degree bins).
   Stat min_angle, max_angle;
+  std::vector<std::int64_t> min_angle_counts;
 };
+
+// Counts of the values in quality_report's min-angle bins: [5 i, 5 i + 5)
+// degrees for i = 0..17, everything from 85 degrees up in the last.
+std::vector<std::int64_t> min_angle_counts(const std::vector<double>& min_angles) {
+  std::vector<std::int64_t> counts(18, 0);
+  for (const double a : min_angles) ++counts[std::min<std::size_t>(17, static_cast<std::size_t>(std::max(0.0, a) / 5))];
+  return counts;
+}
 
 // The angle extremes of quality_report(mesh), taken from the fields of
 // quality_cell_fields instead of a second evaluation of every triangle: the
@@ -129,6 +144,28 @@ void print_construction(const MeshRun& run) {
             << '\n';
 }
 
+// The improvement stage's line and the min-angle histogram before and after
+// it (bins of 5 degrees from 0 to 60: a smallest angle is at most 60).
+void print_improvement(const MeshRun& run) {
+  const QuadMeshStats& s = run.result.stats;
+  const double target = run.options.refine_angle_degrees > 0 ? run.options.refine_angle_degrees : 20;
+  if (s.improved)
+    std::cout << "improve    target " << fmt(target) << " deg: " << s.constructed_triangles << " -> "
+              << run.result.mesh.triangles.size() << " triangles (" << s.improve_removed << " vertices removed, "
+              << s.improve_moved << " moved, " << s.improve_flips << " flips); min angle "
+              << fmt4(s.constructed_min_angle) << " -> " << fmt4(run.min_angle.min) << " deg\n";
+  else
+    std::cout << "improve    off (--no-improve)\n";
+  auto row = [](const std::vector<std::int64_t>& counts) {
+    std::string text;
+    for (std::size_t i = 0; i < 12 && i < counts.size(); ++i) text += " " + std::to_string(counts[i]);
+    return text;
+  };
+  std::cout << "histogram  triangles by min angle, 5-deg bins 0-5 ... 55-60:\n";
+  if (s.improved) std::cout << "  built   " << row(s.constructed_angle_counts) << '\n';
+  std::cout << "  output  " << row(run.min_angle_counts) << '\n';
+}
+
 // One screen, labels padded to 11 columns as in `pqmesh info`.
 void print_summary(const Domain2& domain, const MeshRun& run) {
   const TriMesh2& mesh = run.result.mesh;
@@ -166,8 +203,10 @@ void print_summary(const Domain2& domain, const MeshRun& run) {
             << "mesh       " << mesh.triangles.size() << " triangles, " << mesh.vertices.size() << " vertices\n";
   print_lfs_integral_line(run);
   print_construction(run);
+  print_improvement(run);
   std::cout << "time (s)   tree " << fmt_seconds(s.seconds_tree) << ", points " << fmt_seconds(s.seconds_points)
-            << ", triangulate " << fmt_seconds(s.seconds_triangulate) << "; mesh " << fmt_seconds(run.seconds_mesh)
+            << ", triangulate " << fmt_seconds(s.seconds_triangulate) << ", improve " << fmt_seconds(s.seconds_improve)
+            << "; mesh " << fmt_seconds(run.seconds_mesh)
             << ", check " << fmt_seconds(run.seconds_check)
             << (run.lfs_integral ? ", lfs " + fmt_seconds(run.seconds_lfs) : std::string()) << '\n'
             << "check      valid: " << run.check.elements << " triangles, " << run.check.vertices << " vertices, "
@@ -218,8 +257,8 @@ int run_mesh(const std::vector<std::string>& argv) {
   // default: a 1 MiB threshold raised data/3d/plate_holes.poly's peak by about
   // 2 MB.)
   set_large_page_threshold(std::size_t{1} << 20);
-  const Args args(argv, {"--quiet", "--protect-edges", "--compress", "--lfs-integral", "--quadtree"},
-                  {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle"});
+  const Args args(argv, {"--quiet", "--protect-edges", "--compress", "--lfs-integral", "--quadtree", "--no-improve"},
+                  {"-o", "--output", "--max-size", "--size-field", "--format", "--refine-angle", "--min-angle"});
   args.expect_positional(1, 1);
   MeshRun run;
   run.input = args.positional()[0];
@@ -234,6 +273,15 @@ int run_mesh(const std::vector<std::string>& argv) {
       throw UsageError("--refine-angle must be between 0 (off) and 30 degrees, got '" + *args.option("--refine-angle") + "'");
     run.options.refine_angle_degrees = a;
   }
+  if (args.option("--min-angle")) {
+    if (args.option("--refine-angle")) throw UsageError("give --min-angle or --refine-angle, not both");
+    const double a = args.number("--min-angle", 0);
+    if (!(a > 0 && a <= kMaxMinAngle))
+      throw UsageError("--min-angle must be above 0 and at most " + fmt(kMaxMinAngle) + " degrees, got '" +
+                       *args.option("--min-angle") + "'");
+    run.options.refine_angle_degrees = a;
+  }
+  run.options.improve = !args.flag("--no-improve");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   // Unknown extension: ParseError(Unsupported), exit 2 before any work is done.
   run.format = forced ? *forced : mesh_format_from_path(run.output);
@@ -264,11 +312,15 @@ int run_mesh(const std::vector<std::string>& argv) {
   write.compress = compress;
   if (run.format == MeshFormat::Vtu) {
     write.cell_fields = quality_cell_fields(run.result.mesh);
-    if (!quiet) angle_extremes(write.cell_fields, run.min_angle, run.max_angle);
+    if (!quiet) {
+      angle_extremes(write.cell_fields, run.min_angle, run.max_angle);
+      run.min_angle_counts = min_angle_counts(write.cell_fields[1].values);
+    }
   } else if (!quiet) {
     const QualityReport q = quality_report(run.result.mesh);
     run.min_angle = q.min_angle;
     run.max_angle = q.max_angle;
+    run.min_angle_counts = q.min_angle_hist.counts;
   }
   write_mesh(run.result.mesh, run.output, write);
   if (!quiet) print_summary(domain, run);

@@ -1,12 +1,12 @@
 // cgal_mesh2: the CGAL Mesh_2 peer of the 2D benchmark (bench/run_2d.sh).
 //
-//   cgal_mesh2 INPUT.poly [SIZE]
+//   cgal_mesh2 INPUT.poly [SIZE [ANGLE]]
 //
 // Reads a Triangle .poly (vertices, segments, holes; attributes, markers and
 // a trailing regions section are skipped), builds a constrained Delaunay
 // triangulation of the segments, and refines it with Delaunay_mesh_size_criteria_2
-// using shape bound B = 0.125 (sin^2 of the smallest angle >= B, i.e. about
-// 20.7 degrees) and SIZE as the bound on the longest triangle edge (0 or
+// using shape bound B = sin^2(ANGLE) (the smallest angle's sine squared is
+// at least B; ANGLE in degrees, default 20.7: B = 0.125, CGAL's usual bound) and SIZE as the bound on the longest triangle edge (0 or
 // absent: no size bound). Hole points are the seeds of regions not to mesh;
 // the region reachable from the outside without crossing a segment is
 // never meshed. Prints one line:
@@ -126,15 +126,16 @@ double min_angle_degrees(const Point& a, const Point& b, const Point& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::cerr << "usage: cgal_mesh2 INPUT.poly [SIZE]\n";
+  if (argc < 2 || argc > 4) {
+    std::cerr << "usage: cgal_mesh2 INPUT.poly [SIZE [ANGLE]]\n";
     return 2;
   }
   Poly poly;
-  double size = 0;
+  double size = 0, shape_bound = 0.125;
   try {
     poly = read_poly(argv[1]);
-    if (argc == 3) size = std::stod(argv[2]);
+    if (argc >= 3) size = std::stod(argv[2]);
+    if (argc == 4) shape_bound = std::pow(std::sin(std::stod(argv[3]) * 3.14159265358979323846 / 180), 2);
   } catch (const std::exception& e) {
     std::cerr << "cgal_mesh2: " << e.what() << '\n';
     return 2;
@@ -147,7 +148,7 @@ int main(int argc, char** argv) {
   for (const auto& p : poly.vertices) handles.push_back(cdt.insert(p));
   for (const auto& [a, b] : poly.segments) cdt.insert_constraint(handles[a], handles[b]);
   // mark = false: the seeds (hole points) name the components that are NOT meshed.
-  CGAL::refine_Delaunay_mesh_2(cdt, poly.holes.begin(), poly.holes.end(), Criteria(0.125, size), false);
+  CGAL::refine_Delaunay_mesh_2(cdt, poly.holes.begin(), poly.holes.end(), Criteria(shape_bound, size), false);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::size_t triangles = 0;

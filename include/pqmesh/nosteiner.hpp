@@ -78,7 +78,7 @@ struct NoSteinerOptions {
   bool thesis_fans = false;
   // Quality post-pass on the Full / QOnly mesh (a deviation beyond the
   // thesis, docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison";
-  // src/nosteiner2d/quality_pass.hpp): flips, removals and moves of Steiner points
+  // src/improve2d/quality_pass.hpp): flips, removals and moves of Steiner points
   // at the worst triangle while that raises its angle, then CDT re-triangulated
   // cavities up to the whole mesh. Never lowers the min angle, never stops below
   // the CDT of P, adds no point, keeps dP exactly at the input vertices.

@@ -45,6 +45,13 @@ struct QuadMeshOptions {
   // mesh_polygon only: skip the refined CDT of the input and mesh with the
   // quadtree (quad_mesh). CLI --quadtree.
   bool quadtree = false;
+  // mesh_polygon only: the improvement stage after the construction
+  // (docs/algorithm/quad2d.md "Improvement"): coarsening, smoothing and flips
+  // towards a target angle that never lower the smallest angle and never
+  // replace a triangle at that angle by a worse one. The target is
+  // refine_angle_degrees, or 20 degrees when refinement is off. CLI
+  // --no-improve.
+  bool improve = true;
 };
 
 // Counters and timings of one run, for the CLI summary and the benchmark.
@@ -72,6 +79,16 @@ struct QuadMeshStats {
   bool refined_input = false;
   double refined_input_min_angle = 0;
   std::int64_t refined_input_triangles = 0;
+  // mesh_polygon's improvement stage (QuadMeshOptions::improve): the
+  // construction's triangle count and min-angle histogram (quality_report's
+  // 5-degree bins) before it, and its changes. improved is false when it did
+  // not run.
+  bool improved = false;
+  std::int64_t constructed_triangles = 0;
+  double constructed_min_angle = 0;  // degrees
+  std::vector<std::int64_t> constructed_angle_counts;
+  std::int64_t improve_removed = 0, improve_moved = 0, improve_flips = 0;
+  double seconds_improve = 0;
 };
 
 struct QuadMeshResult {

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "cdt2d/constrained_delaunay.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {

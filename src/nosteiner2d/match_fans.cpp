@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "cdt2d/constrained_delaunay.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh::detail {

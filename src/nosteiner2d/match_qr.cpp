@@ -21,7 +21,7 @@
 #include "nosteiner2d/match_fans.hpp"
 #include "nosteiner2d/match_figures.hpp"
 #include "nosteiner2d/match_squares.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "pqmesh/errors.hpp"
 #include "predicates/predicates.hpp"
 

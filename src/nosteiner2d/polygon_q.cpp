@@ -44,7 +44,7 @@
 #include <numbers>
 
 #include "nosteiner2d/spoke_floor.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "nosteiner2d/stages.hpp"
 #include "predicates/predicates.hpp"
 

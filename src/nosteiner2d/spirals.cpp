@@ -14,7 +14,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "nosteiner2d/stages.hpp"
 
 namespace pqmesh {

@@ -16,8 +16,8 @@
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "nosteiner2d/match_qr.hpp"
-#include "nosteiner2d/quality_pass.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/quality_pass.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
 #include "nosteiner2d/stages.hpp"
 

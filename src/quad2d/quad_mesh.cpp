@@ -14,6 +14,7 @@
 #include "pqmesh/quadmesh.hpp"
 #include "pqmesh/quadmesh_bound.hpp"
 #include "pqmesh/quality.hpp"
+#include "quad2d/improve_mesh.hpp"
 #include "quad2d/mesh_points.hpp"
 #include "quad2d/quadtree_builder.hpp"
 #include "quad2d/radix_sort.hpp"
@@ -241,8 +242,32 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
   return result;
 }
 
-QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& options) {
-  const bool sized = options.max_size > 0 || !options.size_field.points.empty();
+namespace {
+
+// Smoothing sweeps of the improvement stage (docs/algorithm/quad2d.md "Improvement").
+constexpr int kSmoothingSweeps = 1;
+
+// The improvement stage of mesh_polygon (quad2d/improve_mesh.hpp) on result's
+// mesh, with its figures in the stats. No removal under a size bound.
+void improve(const QuadMeshOptions& options, bool sized, QuadMeshResult& result) {
+  QuadMeshStats& stats = result.stats;
+  const QualityReport before = quality_report(result.mesh);
+  stats.constructed_triangles = before.elements;
+  stats.constructed_min_angle = before.min_angle.min;
+  stats.constructed_angle_counts = before.min_angle_hist.counts;
+  if (!options.improve) return;
+  const auto t0 = Clock::now();
+  const double target = options.refine_angle_degrees > 0 ? options.refine_angle_degrees : 20;
+  const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, target, !sized, kSmoothingSweeps);
+  stats.improved = true;
+  stats.improve_removed = is.removed;
+  stats.improve_moved = is.moved;
+  stats.improve_flips = is.flips;
+  stats.seconds_improve = seconds_since(t0);
+}
+
+// The construction of mesh_polygon (its header in pqmesh/quadmesh.hpp).
+QuadMeshResult construct(const Domain2& domain, const QuadMeshOptions& options, bool sized) {
   if (options.quadtree || sized || options.protect_edges || options.refine_angle_degrees <= 0)
     return quad_mesh(domain, options);
   QuadMeshResult refined;
@@ -256,6 +281,15 @@ QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& option
   fallback.stats.refined_input_min_angle = refined.stats.refined_input_min_angle;
   fallback.stats.refined_input_triangles = static_cast<std::int64_t>(refined.mesh.triangles.size());
   return fallback;
+}
+
+}  // namespace
+
+QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& options) {
+  const bool sized = options.max_size > 0 || !options.size_field.points.empty();
+  QuadMeshResult result = construct(domain, options, sized);
+  improve(options, sized, result);
+  return result;
 }
 
 }  // namespace pqmesh

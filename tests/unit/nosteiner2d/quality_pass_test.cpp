@@ -1,4 +1,4 @@
-// The quality post-pass (src/nosteiner2d/quality_pass.hpp,
+// The quality post-pass (src/improve2d/quality_pass.hpp,
 // docs/algorithm/nosteiner2d.md "Fallbacks and the CDT comparison"): on hand
 // meshes whose optimum follows by hand, and on the construction's own meshes of
 // data/2d and of random polygons whose construction is below the CDT: the
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "nosteiner2d/quality_pass.hpp"
+#include "improve2d/quality_pass.hpp"
 #include "pqmesh/check.hpp"
 #include "nosteiner2d/stages.hpp"
 #include "pqmesh/read_domain.hpp"

@@ -68,13 +68,33 @@ struct QualityPassOptions {
   int move_evaluations = 48;    // star evaluations per compass search
   int coarsen_triangles = 256;  // stuck: neighbourhood (triangles) whose removable Steiner vertices go
   bool large_cavities = true;   // stuck after coarsening: cavities of 4, 8, ... triangles up to the whole mesh
+  // The objective. Negative (the default): the smallest angle of the mesh
+  // alone; a removal is accepted when every new angle is above the mesh's
+  // smallest, and when stuck the pass coarsens and empties cavities. A target
+  // angle theta (radians, >= 0): every change keeps the quality of the
+  // triangles it replaces, up to theta: its smallest new angle is above
+  // min(theta, the smallest replaced angle); the worst-first loop stops once
+  // the worst triangle reaches theta, and when no single change helps it stops
+  // (no coarsening, no cavities). With theta, the smallest angle never
+  // decreases and no triangle that met theta is replaced by one that does not.
+  double target = -1;
+  // Sweeps (after the first coarsening sweep) that move each Steiner vertex
+  // whose star's smallest angle is below smoothing_below (radians), in id
+  // order, to the best position of its star (compass search) when that raises
+  // the star's smallest angle.
+  int smoothing_sweeps = 0;
+  double smoothing_below = 0;
+  // false: no vertex is removed (only moves and flips).
+  bool coarsen = true;
 };
 
-// Improves `mesh` in place (triangles, triangle_markers, vertices; unused
-// Steiner vertices are dropped at the end and the rest renumbered in order;
-// ids < first_steiner are unchanged). Triangles made by a change take the
-// marker of the triangle it started from. mesh.edges are left as they are
-// (they must only name vertices < first_steiner).
+// Improves `mesh` in place (triangles, triangle_markers, vertices,
+// vertex_markers; unused Steiner vertices are dropped at the end and the rest
+// renumbered in order, mesh.edges renumbered with them; ids < first_steiner
+// are unchanged). Triangles made by a change take the marker of the triangle
+// it started from. A vertex is changed only when its star is a disk around it
+// (never a vertex of a boundary edge) and its id is >= first_steiner, and no
+// boundary edge changes, so mesh.edges stay edges of the mesh.
 QualityPassStats improve_min_angle(TriMesh2& mesh, int first_steiner, const QualityPassOptions& options = {});
 
 }  // namespace pqmesh::detail

@@ -3,7 +3,7 @@
 // the worst triangle, each accepted only when exact orient2d keeps every
 // triangle it makes strictly counter-clockwise and the smallest angle it makes
 // is above the worst one's.
-#include "nosteiner2d/quality_pass.hpp"
+#include "improve2d/quality_pass.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include <queue>
 #include <utility>
 
-#include "nosteiner2d/cavity_cdt.hpp"
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/cavity_cdt.hpp"
+#include "improve2d/triangle_angles.hpp"
 #include "predicates/predicates.hpp"
 
 namespace pqmesh::detail {
@@ -152,17 +152,22 @@ class Pass {
     st.min_angle_before = current_min();
     const std::int64_t max_steps =
         options_.max_steps >= 0 ? options_.max_steps : 4 * std::int64_t(pts_.size()) + 1000;
-    {  // one coarsening sweep over all Steiner vertices first (cheaper than many local ones)
-      std::vector<int> all;
-      for (std::size_t v = std::size_t(first_steiner_); v < pts_.size(); ++v) all.push_back(int(v));
+    std::vector<int> all;  // every Steiner vertex, in id order
+    for (std::size_t v = std::size_t(first_steiner_); v < pts_.size(); ++v) all.push_back(int(v));
+    if (options_.coarsen) {  // one coarsening sweep over all Steiner vertices first (cheaper than many local ones)
       const std::int64_t removed = remove_above(all, st.min_angle_before);
       st.coarsened += removed;
       st.steps += removed;
     }
+    for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) st.moves += smooth(all);
     while (st.steps < max_steps) {
       const int t = worst();
-      if (t < 0) break;
+      if (t < 0 || (targeted() && angle_[std::size_t(t)] >= options_.target)) break;
       if (!improve(t, st)) {
+        if (targeted()) {
+          st.stopped_stuck = true;
+          break;
+        }
         std::int64_t removed = 0;  // the neighbourhood, then 8 times larger
         for (std::size_t size = std::size_t(options_.coarsen_triangles); removed == 0 && size <= 8 * std::size_t(options_.coarsen_triangles); size *= 8)
           removed = coarsen(t, size, angle_[std::size_t(t)]);
@@ -350,8 +355,25 @@ class Pass {
     return remove_above(order, floor);
   }
 
+  bool targeted() const { return options_.target >= 0; }
+
+  // The smallest angle of the live triangles `set`.
+  double smallest(const std::vector<int>& set) const {
+    double m = 4;
+    for (int t : set) m = std::min(m, angle_[std::size_t(t)]);
+    return m;
+  }
+
+  // The floor a change replacing the triangles `set` must stay above: the
+  // mesh's smallest angle `global` without a target, else min(target, the
+  // set's smallest angle) (QualityPassOptions::target).
+  double floor_for(const std::vector<int>& set, double global) const {
+    return targeted() ? std::min(options_.target, smallest(set)) : global;
+  }
+
   // Removes, in the given order, each Steiner vertex whose star polygon has a
-  // triangulation with every angle above `floor`; returns the number removed.
+  // triangulation with every angle above floor_for(star, floor); returns the
+  // number removed.
   std::int64_t remove_above(const std::vector<int>& verts, double floor) {
     std::int64_t removed = 0;
     Link lk;
@@ -361,7 +383,8 @@ class Pass {
       if (!link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
       q.clear();
       for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
-      if (best_triangulation(q, floor, tris, dp_) <= floor) continue;
+      const double f = floor_for(lk.star, floor);
+      if (best_triangulation(q, f, tris, dp_) <= f) continue;
       const int marker = marker_[std::size_t(lk.star.front())];
       for (int s : lk.star) alive_[std::size_t(s)] = 0;
       for (const auto& x : tris)
@@ -369,6 +392,37 @@ class Pass {
       ++removed;
     }
     return removed;
+  }
+
+  // Moves v to p: its star's triangles are replaced by the same ones at p.
+  void move_vertex(int v, const Link& lk, Vec2 p) {
+    std::vector<int> markers;
+    for (int s : lk.star) {
+      alive_[std::size_t(s)] = 0;
+      markers.push_back(marker_[std::size_t(s)]);
+    }
+    pts_[std::size_t(v)] = p;
+    for (std::size_t i = 0; i < lk.star.size(); ++i) add(tri_[std::size_t(lk.star[i])], markers[i]);
+  }
+
+  // One smoothing sweep: each vertex of `verts` still in the mesh whose star's
+  // smallest angle is below smoothing_below, in order, goes to the best
+  // position of its star when that raises the star's smallest angle
+  // (strictly). Returns the number of moves.
+  std::int64_t smooth(const std::vector<int>& verts) {
+    std::int64_t moves = 0;
+    Link lk;
+    for (int v : verts) {
+      if (!link(v, lk)) continue;
+      const double before = smallest(lk.star);
+      if (before >= options_.smoothing_below) continue;
+      Vec2 p;
+      if (best_position(lk.polygon, v, p) > before) {
+        move_vertex(v, lk, p);
+        ++moves;
+      }
+    }
+    return moves;
   }
 
   // The border of a set of live triangles: its boundary edges, oriented as in
@@ -516,7 +570,7 @@ class Pass {
       }
     }
     for (int v : tr) {  // removals
-      if (v < first_steiner_ || !link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
+      if (!options_.coarsen || v < first_steiner_ || !link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
       std::vector<Vec2> q;
       for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
       std::vector<std::array<int, 3>> tris;
@@ -543,7 +597,7 @@ class Pass {
       }
     }
     std::vector<int> region;
-    if (kind == Kind::None) {  // stuck for single changes: empty a small disk of triangles around t
+    if (kind == Kind::None && !targeted()) {  // stuck for single changes: empty a small disk of triangles around t
       for (std::size_t size = 4; size <= 64; size *= 2) {
         std::vector<int> r;
         std::vector<std::array<int, 3>> tris;
@@ -585,13 +639,7 @@ class Pass {
       }
       case Kind::Move: {
         link(vertex, lk);
-        std::vector<int> markers;
-        for (int s : lk.star) {
-          alive_[std::size_t(s)] = 0;
-          markers.push_back(marker_[std::size_t(s)]);
-        }
-        pts_[std::size_t(vertex)] = moved;
-        for (std::size_t i = 0; i < lk.star.size(); ++i) add(tri_[std::size_t(lk.star[i])], markers[i]);
+        move_vertex(vertex, lk, moved);
         ++st.moves;
         return true;
       }
@@ -624,6 +672,8 @@ class Pass {
     }
     mesh_.vertices = std::move(vertices);
     if (!mesh_.vertex_markers.empty()) mesh_.vertex_markers = std::move(vertex_markers);
+    for (auto& e : mesh_.edges)  // boundary vertices are on live triangles: never dropped
+      for (int& v : e) v = id[std::size_t(v)];
   }
 
   TriMesh2& mesh_;

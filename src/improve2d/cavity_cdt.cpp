@@ -1,5 +1,5 @@
 // Cavity re-triangulation by the CDT of its boundary (cavity_cdt.hpp).
-#include "nosteiner2d/cavity_cdt.hpp"
+#include "improve2d/cavity_cdt.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "nosteiner2d/triangle_angles.hpp"
+#include "improve2d/triangle_angles.hpp"
 
 #include <algorithm>
 

@@ -1,0 +1,35 @@
+#pragma once
+// The improvement stage of the default 2D mesh (docs/algorithm/quad2d.md
+// "Improvement"): the shared quality pass (improve2d/quality_pass.hpp) in its
+// target mode on a mesh of a polygon with holes.
+//
+// Contract: `mesh` is a valid mesh of P whose boundary vertices are on
+// boundary edges (every input vertex is: P's vertices lie on exactly two
+// segments). Changes only interior vertices and the triangles around them:
+// coarsening (a vertex goes when its star has a re-triangulation above
+// min(target, the star's smallest angle)), `smoothing_sweeps` sweeps of
+// moves, then flips / removals / moves at the worst triangle while it is
+// below the target. So the smallest angle never decreases, no triangle at the
+// target or above is replaced by one below it, the triangle count never
+// grows, and the boundary (vertices, edges, edge and vertex markers) is kept;
+// interior vertices are renumbered (mesh.edges with them). Triangle markers
+// are kept (each new triangle takes the marker of the triangle its change
+// started from; P is one region, so they are equal).
+// Deterministic: vertex id order, ties to the first candidate.
+// Cost: O(n) stars re-triangulated (cubic in the star size, at most 64) and
+// 48 star evaluations per moved vertex per sweep.
+#include <cstdint>
+
+#include "pqmesh/mesh.hpp"
+
+namespace pqmesh::quad2d {
+
+struct ImproveStats {
+  std::int64_t removed = 0, moved = 0, flips = 0;
+};
+
+// No removal when `coarsen` is false (a size bound was asked: a removal
+// could make a triangle larger than it allows).
+ImproveStats improve_mesh(TriMesh2& mesh, double target_degrees, bool coarsen, int smoothing_sweeps);
+
+}  // namespace pqmesh::quad2d
