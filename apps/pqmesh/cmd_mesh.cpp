@@ -148,7 +148,7 @@ void print_construction(const MeshRun& run) {
 // it (bins of 5 degrees from 0 to 60: a smallest angle is at most 60).
 void print_improvement(const MeshRun& run) {
   const QuadMeshStats& s = run.result.stats;
-  const double target = run.options.refine_angle_degrees > 0 ? run.options.refine_angle_degrees : 20;
+  const double target = std::max(20.0, run.options.refine_angle_degrees);
   if (s.improved)
     std::cout << "improve    target " << fmt(target) << " deg: " << s.constructed_triangles << " -> "
               << run.result.mesh.triangles.size() << " triangles (" << s.improve_removed << " vertices removed, "

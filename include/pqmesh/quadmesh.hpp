@@ -47,10 +47,10 @@ struct QuadMeshOptions {
   bool quadtree = false;
   // mesh_polygon only: the improvement stage after the construction
   // (docs/algorithm/quad2d.md "Improvement"): coarsening, smoothing and flips
-  // towards a target angle that never lower the smallest angle and never
-  // replace a triangle at that angle by a worse one. The target is
-  // refine_angle_degrees, or 20 degrees when refinement is off. CLI
-  // --no-improve.
+  // towards a target angle theta = max(20, refine_angle_degrees) degrees that
+  // never take the smallest angle below min(theta, the construction's) and
+  // never replace a triangle at theta or above by a worse one. Since the
+  // angle bound is at most 20 degrees, it still holds. CLI --no-improve.
   bool improve = true;
 };
 

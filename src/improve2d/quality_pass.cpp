@@ -159,7 +159,11 @@ class Pass {
       st.coarsened += removed;
       st.steps += removed;
     }
-    for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) st.moves += smooth(all);
+    for (int round = 0; round < options_.smoothing_rounds; ++round) {
+      st.moves += smooth(all);
+      if (options_.coarsen && targeted()) st.coarsened += remove_above(all, st.min_angle_before);
+    }
+    for (int sweep = 0; sweep < options_.final_smoothing_sweeps; ++sweep) st.moves += smooth(all);
     while (st.steps < max_steps) {
       const int t = worst();
       if (t < 0 || (targeted() && angle_[std::size_t(t)] >= options_.target)) break;

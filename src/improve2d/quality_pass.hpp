@@ -42,9 +42,10 @@
 // removed, and no edge with one triangle (a boundary edge) changes, so no
 // Steiner point reaches dP and dP stays split exactly at the input vertices.
 // A moved vertex stays strictly inside the polygon of its star, which lies in
-// P. The smallest angle of the mesh never decreases (floating point angles
-// compared without tolerance: a measurement that chooses, never a validity
-// decision). Deterministic: ties go to the first candidate in the order
+// P. Without a target the smallest angle of the mesh never decreases; with
+// a target theta it never falls below min(theta, its value before) (floating
+// point angles compared without tolerance: a measurement that chooses, never
+// a validity decision). Deterministic: ties go to the first candidate in the order
 // flips (edge order of the triangle), removals, moves (vertex order). Bounded:
 // at most max_steps accepted changes.
 #include <array>
@@ -75,14 +76,18 @@ struct QualityPassOptions {
   // triangles it replaces, up to theta: its smallest new angle is above
   // min(theta, the smallest replaced angle); the worst-first loop stops once
   // the worst triangle reaches theta, and when no single change helps it stops
-  // (no coarsening, no cavities). With theta, the smallest angle never
-  // decreases and no triangle that met theta is replaced by one that does not.
+  // (no coarsening, no cavities). With theta, the smallest angle never falls
+  // below min(theta, its value before), and no triangle that met theta is
+  // replaced by one that does not.
   double target = -1;
-  // Sweeps (after the first coarsening sweep) that move each Steiner vertex
-  // whose star's smallest angle is below smoothing_below (radians), in id
-  // order, to the best position of its star (compass search) when that raises
-  // the star's smallest angle.
-  int smoothing_sweeps = 0;
+  // After the first coarsening sweep: rounds of a smoothing sweep followed,
+  // with a target and coarsen, by another coarsening sweep (smoothing makes
+  // room for removals), then final smoothing sweeps. A smoothing sweep moves
+  // each Steiner vertex whose star's smallest angle is below smoothing_below
+  // (radians), in id order, to the best position of its star (compass search)
+  // when that raises the star's smallest angle.
+  int smoothing_rounds = 0;
+  int final_smoothing_sweeps = 0;
   double smoothing_below = 0;
   // false: no vertex is removed (only moves and flips).
   bool coarsen = true;

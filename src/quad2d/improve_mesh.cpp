@@ -14,13 +14,17 @@ namespace {
 // Smoothing moves the vertices of stars whose smallest angle is below the
 // target plus this many degrees (the rest are left: they are good already).
 constexpr double kSmoothingBand = 10;
+// Rounds of (smoothing, coarsening), then smoothing sweeps (improve_mesh.hpp).
+constexpr int kSmoothingRounds = 3;
+constexpr int kFinalSmoothingSweeps = 2;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180; }
 
-detail::QualityPassOptions pass_options(double target_degrees, bool coarsen, int smoothing_sweeps) {
+detail::QualityPassOptions pass_options(double target_degrees, bool coarsen) {
   detail::QualityPassOptions options;
   options.target = radians(target_degrees);
-  options.smoothing_sweeps = smoothing_sweeps;
+  options.smoothing_rounds = kSmoothingRounds;
+  options.final_smoothing_sweeps = kFinalSmoothingSweeps;
   options.smoothing_below = radians(target_degrees + kSmoothingBand);
   options.large_cavities = false;
   options.coarsen = coarsen;
@@ -89,8 +93,8 @@ detail::QualityPassStats improve_part(TriMesh2& mesh, const std::vector<char>& i
 
 }  // namespace
 
-ImproveStats improve_mesh(TriMesh2& mesh, double target_degrees, bool coarsen, int smoothing_sweeps) {
-  const detail::QualityPassOptions options = pass_options(target_degrees, coarsen, smoothing_sweeps);
+ImproveStats improve_mesh(TriMesh2& mesh, double target_degrees, bool coarsen) {
+  const detail::QualityPassOptions options = pass_options(target_degrees, coarsen);
   if (!coarsen) {
     const detail::QualityPassStats pass = improve_part(mesh, band_stars(mesh, options.smoothing_below), options);
     return {0, pass.moves, pass.flips};

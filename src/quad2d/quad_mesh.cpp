@@ -244,9 +244,6 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
 
 namespace {
 
-// Smoothing sweeps of the improvement stage (docs/algorithm/quad2d.md "Improvement").
-constexpr int kSmoothingSweeps = 1;
-
 // The improvement stage of mesh_polygon (quad2d/improve_mesh.hpp) on result's
 // mesh, with its figures in the stats. No removal under a size bound.
 void improve(const QuadMeshOptions& options, bool sized, QuadMeshResult& result) {
@@ -257,8 +254,11 @@ void improve(const QuadMeshOptions& options, bool sized, QuadMeshResult& result)
   stats.constructed_angle_counts = before.min_angle_hist.counts;
   if (!options.improve) return;
   const auto t0 = Clock::now();
-  const double target = options.refine_angle_degrees > 0 ? options.refine_angle_degrees : 20;
-  const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, target, !sized, kSmoothingSweeps);
+  // At least 20 degrees, the largest value of quad_mesh_angle_bound: the
+  // output's smallest angle is at least min(target, the construction's),
+  // hence at least the bound the construction met.
+  const double target = std::max(20.0, options.refine_angle_degrees);
+  const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, target, !sized);
   stats.improved = true;
   stats.improve_removed = is.removed;
   stats.improve_moved = is.moved;
