@@ -121,6 +121,24 @@ for f in "$data"/2d/*.poly; do
   expect 0 "mesh $b" -- "$pqmesh" mesh "$f" -o "$work/c_$b.vtu" --quiet
   expect 0 "check mesh of $b" -- "$pqmesh" check "$work/c_$b.vtu" --domain "$f"
 done
+# The improvement stage: its summary lines, --no-improve, and --min-angle
+# (the comb's construction meets 30 degrees, so its improved mesh does too;
+# out-of-range values and --min-angle with --refine-angle are refused).
+expect 0 "mesh comb improved" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/imp.vtu"
+contains "$work/out" "^improve +target 20 deg: [0-9]+ -> [0-9]+ triangles" "improve line in the summary"
+contains "$work/out" "^  built +[0-9 ]+$" "histogram of the construction"
+contains "$work/out" "^  output +[0-9 ]+$" "histogram of the output"
+expect 0 "mesh comb --no-improve" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/noimp.vtu" --no-improve
+contains "$work/out" "^improve +off" "--no-improve in the summary"
+expect 0 "mesh comb --min-angle 30" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/a30.vtu" --min-angle 30
+contains "$work/out" "^angles +min (3[0-9]|[4-9][0-9])(\\.[0-9]+)? deg" "--min-angle 30 reaches 30 degrees on the comb"
+expect 0 "check --min-angle 30 mesh" -- "$pqmesh" check "$work/a30.vtu" --domain "$data/2d/comb.poly"
+for bad in 0 34 x; do
+  expect 64 "--min-angle $bad refused" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/bad_angle.vtu" --min-angle "$bad"
+  absent "$work/bad_angle.vtu" "--min-angle $bad writes nothing"
+done
+expect 64 "--min-angle with --refine-angle refused" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/bad_angle.vtu" \
+  --min-angle 25 --refine-angle 25
 # --quiet prints nothing on stdout, and still writes the mesh.
 expect 0 "mesh --quiet" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/quiet.msh" --quiet
 if [[ ! -s $work/out ]]; then ok; else fail "mesh --quiet printed: $(head -c 200 "$work/out")"; fi
