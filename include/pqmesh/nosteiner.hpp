@@ -48,6 +48,7 @@ inline constexpr int kRegionBetween = 2;  // between dQ and dR (§5.4)
 inline constexpr int kRegionR = 3;        // R meshed by quad_mesh (§5.3)
 inline constexpr int kRegionQCdt = 4;     // QOnly fallback: the CDT of Q
 inline constexpr int kRegionPCdt = 5;     // Cdt fallback: the CDT of P
+inline constexpr int kRegionRefined = 6;  // a refined candidate (NoSteinerOptions::refine_targets)
 
 struct NoSteinerOptions {
   // The mesher for R (§5.3). Default: refinement towards 20 degrees
@@ -85,12 +86,27 @@ struct NoSteinerOptions {
   // construction_min_angle keeps the thesis construction's value (the one bounded
   // by k g(P)).
   bool quality_pass = true;
+  // Refined candidates (beyond the thesis; docs/algorithm/nosteiner2d.md
+  // "Refined candidates"): the CDT of P refined towards each target (degrees,
+  // in this order) with points strictly inside P only, never on a segment
+  // (src/nosteiner2d/refined_candidate.hpp; Triangle's -Y), each followed by
+  // the quality pass when quality_pass is on. The output is the candidate
+  // with the largest min angle, in this order: the pipeline (thesis + pass),
+  // the refined candidates, the CDT of P (keep_better_cdt); a later one
+  // replaces an earlier one only when its min angle is strictly larger
+  // (NoSteinerPath::Refined). Empty: the pipeline alone.
+  std::vector<double> refine_targets = {20, 30};
+  std::size_t refine_max_points = 0;  // cap per refinement; 0: detail::refined_point_cap (32 n + 4096)
+  // A target min angle in degrees (0: none), only reported: NoSteinerStats::target_reached
+  // (the CLI's --min-angle A also sets refine_targets = {A}).
+  double min_angle_target = 0;
 };
 
 // Cdt: fallback (a stage could not be built); CdtBetter: the pipeline ran,
-// and the CDT of P had the larger min angle (keep_better_cdt).
-enum class NoSteinerPath { Full, QOnly, Cdt, CdtBetter };
-const char* to_string(NoSteinerPath path);  // "full", "q-only", "cdt", "cdt-better"
+// and the CDT of P had the larger min angle (keep_better_cdt); Refined: a
+// refined candidate had the larger min angle (refine_targets).
+enum class NoSteinerPath { Full, QOnly, Cdt, CdtBetter, Refined };
+const char* to_string(NoSteinerPath path);  // "full", "q-only", "cdt", "cdt-better", "refined"
 
 struct NoSteinerStats {
   // The bound (thesis Theorems 17, 21; SteinerFreeBound with default options).
@@ -107,17 +123,25 @@ struct NoSteinerStats {
   std::int64_t pipeline_triangles = 0, pipeline_vertices = 0;  // its size (the output size m of §5.5.2)
   double ratio = 0;                // min_angle / g
   double cdt_min_angle = 0;        // the CDT of P (when compare_cdt), radians
+  // The best refined candidate (refine_targets; first maximum in target order), after its quality pass.
+  double refined_min_angle = 0;    // radians; 0 when none ran
+  double refined_target = 0;       // its target, degrees
+  std::int64_t refined_inserted = 0;  // its interior points (before the pass)
+  bool refined_target_reached = false;  // its refinement met the target (sharp input corners excused), before the pass
+  // NoSteinerOptions::min_angle_target (degrees) and whether the output's min angle reaches it.
+  double target = 0;
+  bool target_reached = false;
   NoSteinerPath path = NoSteinerPath::Full;
-  std::string fallback_reason;     // empty for Full; for CdtBetter, the two angles
+  std::string fallback_reason;     // empty for Full; for CdtBetter and Refined, the two angles
   // Counts (triangles by region; vertices of Q and R loops).
   std::int64_t triangles = 0, vertices = 0;
-  std::int64_t wedge_triangles = 0, between_triangles = 0, r_triangles = 0, cdt_triangles = 0;
+  std::int64_t wedge_triangles = 0, between_triangles = 0, r_triangles = 0, cdt_triangles = 0, refined_triangles = 0;
   std::int64_t q_vertices = 0, r_vertices = 0;
   // Smallest angle per region (radians; 0 when the region is empty).
   double wedge_min_angle = 0, between_min_angle = 0, r_min_angle = 0;
   // Wall-clock seconds per stage.
   double seconds_bound = 0, seconds_q = 0, seconds_r = 0, seconds_between = 0, seconds_verify = 0,
-         seconds_cdt = 0, seconds_pass = 0, seconds_total = 0;
+         seconds_cdt = 0, seconds_pass = 0, seconds_refine = 0, seconds_total = 0;
 };
 
 struct NoSteinerResult {

@@ -209,6 +209,7 @@ bool Refiner::collect_encroached(const Walk& w, Vec2 c) {
 }
 
 bool Refiner::splittable(int u, int v) const {
+  if (!split_) return false;
   if (!refused_set_.empty() && refused_set_.count(pair_key(u, v)) != 0) return false;
   const auto [A, B] = ends_of(origin_of(u, v));
   return norm(pts_[v] - pts_[u]) >= kMinPieceFraction * norm(B - A);
@@ -297,6 +298,17 @@ bool Refiner::split_subsegment(int u, int v) {
   return true;
 }
 
+// Insert c, located by w (End::Triangle or End::Edge), as a free vertex.
+void Refiner::insert_interior(Vec2 c, const Walk& w) {
+  const int id = static_cast<int>(pts_.size());
+  pts_.push_back(c);
+  seg_of_.push_back(-1);
+  vgroup_.push_back(-1);
+  tri_.insert_interior_point(id, w.t, w.end == Walk::End::Edge ? edge_of(w.h) : -1);
+  ++inserted_;
+  after_insertion(id);
+}
+
 // Queue the bad triangles around the new vertex p and the subsegments that
 // p encroaches (edges opposite p) or that are encroached by the apex of an
 // inside triangle (p's own subsegments). All changed triangles are around p.
@@ -348,6 +360,10 @@ void Refiner::run(RefineResult& out) {
     const Vec2 c = new_point_for(q.t);
     if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
     const Walk w = walk_to(q.t, c);
+    if (!split_) {  // refine_inside.cpp
+      refine_inside(q, c, w);
+      continue;
+    }
     if (w.end == Walk::End::Failed || w.end == Walk::End::Vertex) continue;  // give up on this triangle
     if (w.end == Walk::End::Constraint) {
       const auto& T = tri_.tri(tri_of(w.h));
@@ -365,18 +381,17 @@ void Refiner::run(RefineResult& out) {
       if (any) bad_.push_back(q);  // re-examined after the splits
       continue;
     }
-    const int id = static_cast<int>(pts_.size());
-    pts_.push_back(c);
-    seg_of_.push_back(-1);
-    vgroup_.push_back(-1);
-    tri_.insert_interior_point(id, w.t, w.end == Walk::End::Edge ? edge_of(w.h) : -1);
-    ++inserted_;
-    after_insertion(id);
+    insert_interior(c, w);
   }
   out.cap_reached = capped;
   out.inserted = inserted_;
   out.inserted_on_constraints = on_constraints_;
   out.refused_splits = refused_;
+  out.given_up_outside = given_up_outside_;
+  out.given_up_near = given_up_near_;
+  out.given_up_flat = given_up_flat_;
+  out.apex_points = apex_points_;
+  out.halfway_points = halfway_points_;
   // The triangles bad at the end are among the queued slots: the initial scan
   // queued every bad inside triangle, and a triangle changes (vertices or
   // label) only by an insertion at a point p that it then has as a vertex

@@ -47,6 +47,40 @@
 //     edge joins points on two input segments that meet at a sharp vertex.
 //     Near such corners the result can stay below the input angle (measured:
 //     down to about 0.8 x min(alpha, target)).
+// Without constraint splits (RefineOptions::split_constraints = false, the
+// setting of Triangle's -Y; used by the triangulation without boundary
+// Steiner points, src/nosteiner2d/refined_candidate.hpp; refine_inside.cpp):
+// no subsegment is queued or split, encroachment as such is ignored. For a
+// bad triangle t with new point c (off-center or circumcenter), c is
+// inserted when
+//   (a) the walk from t reaches c strictly inside an inside triangle or on an
+//       unconstrained edge: c is strictly inside the domain;
+//   (b) no vertex of c's cavity (the vertices c is joined to) is closer to c
+//       than t's shortest edge;
+//   (c) no constrained edge ab of the cavity is flat for c: c encroaches ab
+//       (exact dot_sign) and the triangle abc has an angle below the target
+//       at a or b - a bad triangle whose circumcenter is on or beyond ab,
+//       which could never be improved.
+// When (a) fails at a constrained edge or (c) fails at an edge ab, the
+// apexes of ab (on its bisector, base angles 60, 45, 32 degrees) are tried,
+// then the point halfway from the midpoint of t's shortest edge to c; the
+// first that passes (a), (b) and (c) is inserted and t re-queued (for an
+// apex, (b) uses the smaller of t's shortest edge and 0.99 |a apex|, and (c)
+// skips ab). Otherwise t is given up (it stays; target_reached is then false
+// unless it is excused). Distances and angles in (b), (c) are doubles: a
+// choice between inserting and giving up, never a validity decision.
+// Edges: every edge an insertion makes joins the new point to a cavity
+// vertex, so it is at least as long as t's shortest edge (a mesh edge) or,
+// for an apex, 0.99^(1/2) |a apex| >= 0.58 |ab| (ab a constraint: an edge of
+// the first mesh). Hence no edge is ever shorter than 0.58 times the
+// shortest edge of the constrained Delaunay triangulation: points do not
+// accumulate (termination itself is by max_new_points; the fallback points
+// are fixed points of their edge or triangle, each inserted at most once, a
+// second walk ending on the vertex). Away from constraints (b) never
+// fires for targets <= 30 degrees: the circumcenter is at distance R = l / (2
+// sin a) > l from every cavity vertex (a < 30 the smallest angle, l the
+// shortest edge), Ungor's off-center at least (l / 2) sqrt(1 + (0.95 cot(theta
+// / 2))^2) > l.
 // Termination: every insertion counts against max_new_points (0 means twice
 // the number of input points, which is too few for a coarse polygon: pass a
 // cap for those), so the pass always ends. Besides the cap, subsegments are
@@ -84,6 +118,14 @@ struct RefineOptions {
   double min_angle_degrees = 20;   // target (Ruppert's guarantee needs <= 20.7 with input angles >= 60)
   std::size_t max_new_points = 0;  // cap on inserted points; 0 = 2 * number of input points
   bool off_centers = true;         // false: plain circumcenters
+  // false: no point is ever put on a constrained edge (Triangle's -Y; the
+  // subsegments stay the input constraints). Encroachment is then ignored: a
+  // bad triangle's new point is inserted when the walk reaches it strictly
+  // inside the domain (not on or beyond a constrained edge) and it is at
+  // least as far from every vertex of its cavity as the triangle's shortest
+  // edge is long; otherwise the triangle is given up (see "Without
+  // constraint splits" above).
+  bool split_constraints = true;
 };
 
 struct RefineResult {
@@ -95,6 +137,9 @@ struct RefineResult {
   std::size_t inserted_on_constraints = 0;      // of which on constraints
   std::size_t refused_splits = 0;               // subsegment splits refused (too short, rounding, orientation)
   std::size_t excused = 0;                      // bad triangles excused at the end (small input angles)
+  // split_constraints off ("Without constraint splits"): bad triangles given
+  // up by rule (a), (b), (c), and apex points inserted.
+  std::size_t given_up_outside = 0, given_up_near = 0, given_up_flat = 0, apex_points = 0, halfway_points = 0;
   bool cap_reached = false;                     // stopped by max_new_points
   bool target_reached = false;                  // every inside triangle not excused meets the target
 };

@@ -44,6 +44,7 @@ class Refiner {
     // pts holds exactly the input points here (in.points may have been moved
     // into it); only in.constraints is read later.
     cap_ = opt.max_new_points != 0 ? opt.max_new_points : 2 * pts.size();
+    split_ = opt.split_constraints;
     const double th = opt.min_angle_degrees * std::numbers::pi / 180.0;
     cos_target_ = std::cos(th);
     off_factor_ = opt.off_centers ? 0.475 / std::tan(th / 2) : std::numeric_limits<double>::infinity();
@@ -76,6 +77,19 @@ class Refiner {
   Vec2 new_point_for(int t) const;
   Walk walk_to(int t, Vec2 c);
   bool collect_encroached(const Walk& w, Vec2 c);
+  void insert_interior(Vec2 c, const Walk& w);
+  // split_ off (refine_inside.cpp; refine.hpp "Without constraint splits"):
+  void refine_inside(const QueuedTri& q, Vec2 c, const Walk& w);
+  bool too_near_cavity(double l2, Vec2 c) const;
+  double shortest2(int t) const;
+  double length2_of(int h) const {
+    const auto& T = tri_.tri(tri_of(h));
+    const Vec2 d = pts_[T.v[prev3(edge_of(h))]] - pts_[T.v[next3(edge_of(h))]];
+    return dot(d, d);
+  }
+  int flat_constrained_edge(Vec2 c, int except) const;
+  Vec2 apex_of(int h, double tan_beta) const;
+  bool try_point(const QueuedTri& q, int from, Vec2 p, double near2, int except);
   bool splittable(int u, int v) const;
   bool split_subsegment(int u, int v);
   void after_insertion(int p);
@@ -100,6 +114,7 @@ class Refiner {
   std::vector<std::size_t> piece_begin_;  // pieces_ of input constraint i: [piece_begin_[i], piece_begin_[i + 1])
   int n_in_;
   std::size_t cap_ = 0;
+  bool split_ = true;  // RefineOptions::split_constraints
   double cos_target_ = 1;
   double off_factor_ = 0;
   std::vector<int> seg_of_;  // per vertex: input constraint (canonical) of a Steiner point on it, else -1
@@ -117,6 +132,7 @@ class Refiner {
   std::vector<int> cavity_;
   std::vector<std::array<int, 2>> encroached_;
   std::size_t inserted_ = 0, on_constraints_ = 0, refused_ = 0;
+  std::size_t given_up_outside_ = 0, given_up_near_ = 0, given_up_flat_ = 0, apex_points_ = 0, halfway_points_ = 0;  // split_ off (RefineResult)
   // Subsegments whose split was refused (rounding or orientation): never
   // tried again, so a bad triangle that encroaches only such subsegments is
   // given up instead of being re-queued forever. Rare path.

@@ -1,22 +1,28 @@
 // Thesis ch. 5 assembled: Q^c + (dQ to dR) + the mesh of R, with the
-// documented fallbacks (include/pqmesh/nosteiner.hpp,
+// documented fallbacks, then the refined candidates and the CDT of P as
+// alternatives (include/pqmesh/nosteiner.hpp,
 // docs/algorithm/nosteiner2d.md "Matching R to Q").
 //
 // Invariant of every path: the vertices on dP are exactly the input vertices
 // (ids 0..n-1 of the output, in input order). Full: Q^c keeps the input
 // vertices first and adds spoke ends strictly inside P (polygon_q); R's mesh
 // lies inside Q and the matching adds points only strictly inside Q \ R. QOnly: the CDT of Q adds no point. Cdt: the
-// CDT of P adds no point. verify turns this argument into a check.
+// CDT of P adds no point. Refined: refinement without constraint splits adds
+// points strictly inside P only (refined_candidate.hpp). verify turns this
+// argument into a check.
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <algorithm>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <utility>
 
 #include "cdt2d/constrained_delaunay.hpp"
 #include "nosteiner2d/match_qr.hpp"
 #include "improve2d/quality_pass.hpp"
+#include "nosteiner2d/refined_candidate.hpp"
 #include "improve2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
 #include "nosteiner2d/stages.hpp"
@@ -29,6 +35,7 @@ const char* to_string(NoSteinerPath path) {
     case NoSteinerPath::QOnly: return "q-only";
     case NoSteinerPath::Cdt: return "cdt";
     case NoSteinerPath::CdtBetter: return "cdt-better";
+    case NoSteinerPath::Refined: return "refined";
   }
   return "?";
 }
@@ -224,22 +231,14 @@ void mesh_from_q(const PolygonQ& q, const Domain2& domain, const NoSteinerOption
 }
 
 // The quality pass (quality_pass.hpp) on `mesh`; with options.verify, the
-// mesh before the pass is kept when the output fails the checker.
-void run_quality_pass(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, NoSteinerStats& st,
-                      std::string& reason) {
-  auto t = Clock::now();
+// mesh before the pass is kept (and the reason appended to `reason`) when
+// the output fails the checker. Adds its verify time to st.seconds_verify.
+detail::QualityPassStats checked_quality_pass(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh,
+                                              NoSteinerStats& st, std::string& reason) {
   TriMesh2 before = mesh;
-  const detail::QualityPassStats pass =
-      detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
-  st.pass_flips = pass.flips;
-  st.pass_removals = pass.removals;
-  st.pass_moves = pass.moves;
-  st.pass_cavities = pass.cavities + pass.large_cavities;
-  st.pass_removals += pass.coarsened;
-  st.pass_stuck = pass.stopped_stuck;
-  st.seconds_pass = since(t);
+  const detail::QualityPassStats pass = detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
   if (options.verify) {  // valid by construction (quality_pass.hpp); checked like every stage
-    t = Clock::now();
+    const auto t = Clock::now();
     std::string why;
     if (!passes(mesh, domain, why)) {
       mesh = std::move(before);
@@ -247,18 +246,78 @@ void run_quality_pass(const Domain2& domain, const NoSteinerOptions& options, Tr
     }
     st.seconds_verify += since(t);
   }
+  return pass;
+}
+
+// The quality pass on the pipeline's mesh, its counts into st.pass_*.
+void run_quality_pass(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, NoSteinerStats& st,
+                      std::string& reason) {
+  const auto t = Clock::now();
+  const double verify_before = st.seconds_verify;
+  const detail::QualityPassStats pass = checked_quality_pass(domain, options, mesh, st, reason);
+  st.pass_flips = pass.flips;
+  st.pass_removals = pass.removals + pass.coarsened;
+  st.pass_moves = pass.moves;
+  st.pass_cavities = pass.cavities + pass.large_cavities;
+  st.pass_stuck = pass.stopped_stuck;
+  st.seconds_pass = since(t) - (st.seconds_verify - verify_before);
+}
+
+// A target in degrees as printed ("%g").
+std::string degrees_text(double degrees) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", degrees);
+  return buffer;
+}
+
+// The refined candidates (options.refine_targets, in order; refined_candidate.hpp),
+// each + the quality pass (options.quality_pass) and, with options.verify,
+// dropped when it fails the checker. The best one (first maximum) is
+// recorded in st.refined_*; it replaces `mesh` (min angle `best`, updated;
+// st.path Refined) when its min angle is strictly larger.
+void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, double& best,
+                            NoSteinerStats& st) {
+  const auto t = Clock::now();
+  const std::size_t cap =
+      options.refine_max_points != 0 ? options.refine_max_points : detail::refined_point_cap(domain);
+  bool any = false;
+  for (const double target : options.refine_targets) {
+    detail::RefinedCandidate c = detail::refined_candidate(domain, target, cap);
+    std::string why;
+    if (options.quality_pass) checked_quality_pass(domain, options, c.mesh, st, why);
+    if (options.verify && !passes(c.mesh, domain, why)) continue;
+    const double angle = min_triangle_angle(c.mesh);
+    if (!any || angle > st.refined_min_angle) {
+      any = true;
+      st.refined_min_angle = angle;
+      st.refined_target = target;
+      st.refined_inserted = std::int64_t(c.inserted);
+      st.refined_target_reached = c.target_reached;
+    }
+    if (angle > best) {
+      st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") +
+                           "the refined candidate (target " + degrees_text(target) +
+                           " deg) has the larger min angle (" + std::to_string(angle) + " rad against " +
+                           std::to_string(best) + " rad)";
+      st.path = NoSteinerPath::Refined;
+      best = angle;
+      mesh = std::move(c.mesh);
+    }
+  }
+  st.seconds_refine = since(t);
 }
 
 // Records the CDT of P's min angle; with options.keep_better_cdt it replaces
-// `mesh` (st.path CdtBetter) when its min angle is larger.
-void compare_with_cdt(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, NoSteinerStats& st) {
+// `mesh` (min angle `best`; st.path CdtBetter) when its min angle is larger.
+void compare_with_cdt(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, double best,
+                      NoSteinerStats& st) {
   const auto t = Clock::now();
   TriMesh2 cdt = p_cdt(domain);
   st.cdt_min_angle = min_triangle_angle(cdt);
   st.seconds_cdt = since(t);
-  if (options.keep_better_cdt && st.path != NoSteinerPath::Cdt && st.cdt_min_angle > st.pipeline_min_angle) {
+  if (options.keep_better_cdt && st.path != NoSteinerPath::Cdt && st.cdt_min_angle > best) {
     st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") + "the CDT of P has the larger min angle (" + std::to_string(st.cdt_min_angle) +
-                         " rad against " + std::to_string(st.pipeline_min_angle) + " rad from " +
+                         " rad against " + std::to_string(best) + " rad from " +
                          to_string(st.path) + ")";
     st.path = NoSteinerPath::CdtBetter;
     mesh = std::move(cdt);
@@ -289,6 +348,8 @@ void record_final_stats(const TriMesh2& mesh, NoSteinerStats& st) {
   st.cdt_triangles = n;
   region_min_angle(mesh, kRegionPCdt, n);
   st.cdt_triangles += n;
+  region_min_angle(mesh, kRegionRefined, st.refined_triangles);
+  st.target_reached = st.min_angle >= st.target * std::numbers::pi / 180;
 }
 
 }  // namespace
@@ -314,7 +375,10 @@ NoSteinerResult triangulate_without_boundary_steiner(const Domain2& domain, cons
   st.pipeline_min_angle = min_triangle_angle(mesh);
   st.pipeline_triangles = std::int64_t(mesh.triangles.size());
   st.pipeline_vertices = std::int64_t(mesh.vertices.size());
-  if (options.compare_cdt) compare_with_cdt(domain, options, mesh, st);
+  double best = st.pipeline_min_angle;
+  if (!options.refine_targets.empty()) try_refined_candidates(domain, options, mesh, best, st);
+  if (options.compare_cdt) compare_with_cdt(domain, options, mesh, best, st);
+  st.target = options.min_angle_target;
   add_boundary_edges(domain, mesh);
   record_final_stats(mesh, st);
   out.mesh = std::move(mesh);

@@ -11,9 +11,10 @@ for f in "$data"/2d/*.poly; do
   expect 0 "mesh --no-boundary-steiner $b" -- "$pqmesh" mesh "$f" -o "$work/$b.vtu" --no-boundary-steiner
   cp "$work/out" "$work/$b.summary"
   contains "$work/$b.summary" "^bound g +g\(P\) = [0-9.e+-]+ deg; .* <= min\(60, 5\.319 \* g\) = " "g line $b"
-  contains "$work/$b.summary" "^angles +min [0-9.e+-]+ deg; achieved / g = " "angles line $b"
+  contains "$work/$b.summary" "^angles +min [0-9.e+-]+ deg; achieved / upper bound = [0-9.e+-]+ \(upper bound [0-9.e+-]+ deg\); achieved / g = " "angles line $b"
+  contains "$work/$b.summary" "^refined +best refined candidate .* min [0-9.e+-]+ deg" "refined line $b"
   contains "$work/$b.summary" "^cdt +constrained Delaunay .* min [0-9.e+-]+ deg" "cdt line $b"
-  contains "$work/$b.summary" "^path +(full|q-only|cdt|cdt-better)" "path line $b"
+  contains "$work/$b.summary" "^path +(full|q-only|cdt|cdt-better|refined)" "path line $b"
   contains "$work/$b.summary" "^check +valid \(no boundary Steiner\)" "check line $b"
   # The written file, checked independently by the checker subcommand.
   expect 0 "check --no-boundary-steiner $b" -- "$pqmesh" check "$work/$b.vtu" --domain "$f" --no-boundary-steiner
@@ -47,6 +48,16 @@ expect 64 "--no-quality-pass without --no-boundary-steiner" -- "$pqmesh" mesh "$
 [[ -e $work/never_pass.vtu ]] && fail "output written after a usage error" || ok
 expect 64 "--thesis-fans without --no-boundary-steiner" -- "$pqmesh" mesh "$data/2d/comb.poly" -o "$work/never_fans.vtu" --thesis-fans
 [[ -e $work/never_fans.vtu ]] && fail "output written after a usage error" || ok
+
+# --min-angle A: reached on the square (its CDT has 45 degrees); on the 1-degree spike 10 degrees
+# is above the upper bound min(60, C g) and reported as not reachable. Both outputs pass the checker.
+expect 0 "square --min-angle 30" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/ma.vtu" --no-boundary-steiner --min-angle 30
+contains "$work/out" "^target +30 deg: reached" "--min-angle reached"
+expect 0 "spike_1deg --min-angle 10" -- "$pqmesh" mesh "$data/2d/spike_1deg.poly" -o "$work/ma1.vtu" --no-boundary-steiner --min-angle 10
+contains "$work/out" "^target +10 deg: not reached; best [0-9.e+-]+ deg; 10 not reachable: upper bound [0-9.e+-]+ deg" "--min-angle not reachable"
+expect 0 "spike_1deg --min-angle check" -- "$pqmesh" check "$work/ma1.vtu" --domain "$data/2d/spike_1deg.poly" --no-boundary-steiner
+expect 64 "bad --min-angle" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/bad_ma.vtu" --no-boundary-steiner --min-angle 0
+[[ -e $work/bad_ma.vtu ]] && fail "output written after a usage error" || ok
 
 # Failures write nothing: a missing -o, a bad option value, an invalid input.
 expect 64 "missing -o" -- "$pqmesh" mesh "$data/2d/square.poly" --no-boundary-steiner

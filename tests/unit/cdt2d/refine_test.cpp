@@ -4,8 +4,11 @@
 // module), and the achieved minimum angle is measured by quality_report.
 #include "cdt2d/refine.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "cdt_test_util.hpp"
 #include "pqmesh/alpha.hpp"
@@ -320,6 +323,44 @@ TEST(CdtRefine, Deterministic) {
     EXPECT_EQ(a.points, b.points);
     EXPECT_EQ(a.triangles, b.triangles);
     EXPECT_EQ(a.constraints, b.constraints);
+  }
+}
+
+// split_constraints = false (refine.hpp "Without constraint splits"): no
+// point on any constraint, the output constraints are the input ones
+// unsplit, the mesh passes check_mesh with the no-boundary-Steiner check, no
+// edge is shorter than 0.58 times the CDT's shortest (refine.hpp "Without
+// constraint splits": squared, 0.99 / (4 cos^2 32 deg) = 0.3441, asserted
+// as 0.34 to leave the rounding of the products), and the run is
+// deterministic.
+TEST(CdtRefine, WithoutConstraintSplits) {
+  auto min_edge2 = [](const std::vector<Vec2>& p, const std::vector<std::array<int, 3>>& tris) {
+    double best = 1e300;
+    for (const auto& t : tris)
+      for (int i = 0; i < 3; ++i) {
+        const Vec2 d = p[static_cast<std::size_t>(t[i])] - p[static_cast<std::size_t>(t[(i + 1) % 3])];
+        best = std::min(best, dot(d, d));
+      }
+    return best;
+  };
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    SCOPED_TRACE(pqmesh::test::describe_polygon(seed));
+    const Domain2 d = make_domain(pqmesh::test::random_polygon_with_holes(seed));
+    const CdtInput in = loops_as_constraints(d);
+    RefineOptions opt;
+    opt.max_new_points = 100000;
+    opt.split_constraints = false;
+    const RefineResult r = refine_constrained_delaunay(in, opt);
+    expect_result_shape(in, r);
+    EXPECT_EQ(r.inserted_on_constraints, 0u);
+    EXPECT_EQ(r.constraints, in.constraints);
+    const TriMesh2 mesh = as_mesh(r);
+    const CheckReport report = check_mesh(mesh, d, CheckOptions{.no_boundary_steiner = true});
+    ASSERT_TRUE(report.valid()) << report.to_text();
+    EXPECT_GE(min_edge2(r.points, r.triangles), 0.34 * min_edge2(in.points, constrained_delaunay(in, true).triangles));
+    const RefineResult again = refine_constrained_delaunay(in, opt);
+    EXPECT_EQ(r.points, again.points);
+    EXPECT_EQ(r.triangles, again.triangles);
   }
 }
 

@@ -131,7 +131,8 @@ void remesh_disk(const std::string& name, Vec2 centre, const NoSteinerOptions& o
 
 TEST(NoSteinerFixedBoundary, DiskCutFromQuadMesh) {
   remesh_disk("square", {0.5, 0.5}, test::raw_options());
-  remesh_disk("square", {0.5, 0.5}, NoSteinerOptions{});
+  const NoSteinerOptions defaults;
+  remesh_disk("square", {0.5, 0.5}, defaults);
   remesh_disk("regions", {1.0, 0.7}, test::raw_options());
 }
 

@@ -25,6 +25,8 @@ struct RunStats {
   double min_ratio_full = 1e300;          // over Full-path outputs only
   double min_vs_cdt = 1e300;              // achieved / CDT min angle
   std::vector<double> ratios;
+  std::vector<double> bound_ratios;       // output min angle / upper bound min(60, C g)
+  int refined_outputs = 0;                // outputs that are a refined candidate
   std::string worst;                      // the domain realising min_ratio
   double output_min_ratio = 1e300;        // achieved / g of the output (after keep_better_cdt)
   // The construction before the quality post-pass (NoSteinerStats::construction_min_angle).
@@ -60,7 +62,8 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   }
   EXPECT_EQ(res.mesh.triangle_markers.size(), res.mesh.triangles.size());
   EXPECT_EQ(s.triangles, std::int64_t(res.mesh.triangles.size()));
-  EXPECT_EQ(s.wedge_triangles + s.between_triangles + s.r_triangles + s.cdt_triangles, s.triangles);
+  EXPECT_EQ(s.wedge_triangles + s.between_triangles + s.r_triangles + s.cdt_triangles + s.refined_triangles,
+            s.triangles);
   // A fallback always says why; the full path never carries a reason.
   EXPECT_EQ(s.path == NoSteinerPath::Full, s.fallback_reason.empty()) << s.fallback_reason;
   // The min angle reported is the mesh's (recomputed here independently of the stats).
@@ -74,6 +77,16 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
     EXPECT_GE(s.min_angle, s.cdt_min_angle);
   }
   EXPECT_GE(s.min_angle, s.pipeline_min_angle);
+  // The output is the best of the pipeline and the refined candidates (NoSteinerOptions::refine_targets).
+  EXPECT_GE(s.min_angle, s.refined_min_angle);
+  if (s.path == NoSteinerPath::Refined) {
+    EXPECT_EQ(s.min_angle, s.refined_min_angle);
+    EXPECT_GT(s.refined_min_angle, s.pipeline_min_angle);
+    EXPECT_EQ(s.refined_triangles, s.triangles);
+  }
+  if (!options.refine_targets.empty()) {
+    EXPECT_GT(s.refined_target, 0);  // a candidate ran (and, with verify, passed the check)
+  }
   // The quality post-pass never lowers the min angle (quality_pass.hpp).
   EXPECT_GE(s.pipeline_min_angle, s.construction_min_angle);
   // ... and never stops below the CDT of P (its last candidate, the whole
@@ -102,6 +115,8 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   st.min_vs_cdt = std::min(st.min_vs_cdt, s.pipeline_min_angle / s.cdt_min_angle);
   st.output_min_ratio = std::min(st.output_min_ratio, s.ratio);
   st.ratios.push_back(pipeline_ratio);
+  st.bound_ratios.push_back(s.min_angle / s.upper_bound);
+  if (s.path == NoSteinerPath::Refined) ++st.refined_outputs;
   return res;
 }
 
@@ -110,6 +125,12 @@ inline void print(const RunStats& st, const char* what) {
   std::sort(r.begin(), r.end());
   std::sort(c.begin(), c.end());
   const double median = r.empty() ? 0 : r[r.size() / 2];
+  std::vector<double> b = st.bound_ratios;
+  std::sort(b.begin(), b.end());
+  if (!b.empty())
+    std::cout << "[no-boundary-Steiner] " << what << ": output / upper bound min " << b.front() << ", median "
+              << b[b.size() / 2] << ", max " << b.back() << "; refined candidate written on " << st.refined_outputs
+              << " of " << b.size() << "\n";
   std::cout << "[no-boundary-Steiner] " << what << ": construction (before the quality pass) achieved/g min "
             << st.construction_min_ratio << ", median " << (c.empty() ? 0 : c[c.size() / 2])
             << ", worse than the CDT on " << st.construction_worse_than_cdt << "; after the pass:\n";

@@ -85,6 +85,7 @@ NoSteinerOptions construction_only() {
   o.keep_better_cdt = false;
   o.compare_cdt = false;
   o.quality_pass = false;
+  o.refine_targets.clear();  // the construction's own mesh, never a refined candidate
   return o;
 }
 

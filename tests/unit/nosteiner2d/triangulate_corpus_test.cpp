@@ -85,77 +85,15 @@ TEST(NoSteinerTriangulation, CorpusThesisFans) {
 // no boundary Steiner point, never below the CDT of P (by construction).
 TEST(NoSteinerTriangulation, CorpusDefaultOptions) {
   test::RunStats st;
-  for (const char* name : test::kCorpus2d)
-    test::run_and_check(test::corpus_domain(name), name, st,
-                        NoSteinerOptions{});
+  const NoSteinerOptions defaults;
+  for (const char* name : test::kCorpus2d) test::run_and_check(test::corpus_domain(name), name, st, defaults);
   test::print(st, "data/2d, default options");
 }
 
-// Hard cases (dyadic coordinates unless said otherwise).
+// The hard cases (corpus2d.hpp).
 void hard_cases(const NoSteinerOptions& options, double k, const char* label) {
-  auto run = [&](const Domain2& d, const std::string& what, test::RunStats& st) {
-    pqmesh::run(d, what, st, options, k);
-  };
   test::RunStats st;
-  // Thesis Fig. 1.1: a thin trapezoid whose long edge faces close vertices.
-  for (double t : {1.0 / 64, 1.0 / 1024})
-    run(polygon({{0, 0}, {1, 0}, {0.5625, t}, {0.4375, t}}), "fig1.1 trapezoid t=" + std::to_string(t), st);
-  // A reflex vertex very close to the middle of a long edge (the notch).
-  for (double y : {1.0 / 128, 1.0 / 4096})
-    run(polygon({{0, 0}, {1, 0}, {1, 1}, {0.625, 1}, {0.484375, y}, {0.375, 1}, {0, 1}}),
-        "reflex notch y=" + std::to_string(y), st);
-  // A comb with narrow slots: 8 teeth of width 1/16, slots 1/512 wide, 1/2 deep.
-  {
-    std::vector<Vec2> c = {{0, 0}, {1, 0}};
-    const double tooth = 1.0 / 16, slot = 1.0 / 512;
-    double x = 1;
-    c.push_back({1, 1});
-    for (int i = 0; i < 8; ++i) {
-      x -= tooth;
-      if (i == 7) break;
-      c.push_back({x, 1});
-      c.push_back({x, 0.5});
-      x -= slot;
-      c.push_back({x, 0.5});
-      c.push_back({x, 1});
-    }
-    c.push_back({x, 1});
-    c.push_back({0, 1});
-    run(polygon(c), "comb narrow slots", st);
-  }
-  // Small-angle spikes: a star of 12 spikes with tips at radius 1 and
-  // valleys at 1/4 (tip angles ~6 deg), plus one 0.5-degree spike.
-  {
-    std::vector<Vec2> s;
-    for (int i = 0; i < 24; ++i) {
-      const double a = std::numbers::pi * i / 12, r = i % 2 == 0 ? 1.0 : 0.25;
-      s.push_back({std::ldexp(std::round(std::ldexp(r * std::cos(a), 30)), -30),
-                   std::ldexp(std::round(std::ldexp(r * std::sin(a), 30)), -30)});
-    }
-    run(polygon(s), "star 12 spikes", st);
-    const double h = std::tan(0.25 * std::numbers::pi / 180);
-    run(polygon({{0, -h}, {1, 0}, {0, h}, {-0.5, 0.5}, {-0.5, -0.5}}), "spike 0.5 deg", st);
-  }
-  // Many holes: an 8 x 8 grid of square holes (64 holes) in the unit square.
-  {
-    std::vector<std::vector<Vec2>> loops = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) {
-        const double x = (i + 0.25) / 8, y = (j + 0.25) / 8, w = 0.5 / 8;
-        loops.push_back({{x, y}, {x, y + w}, {x + w, y + w}, {x + w, y}});
-      }
-    Pslg2 p = loops_pslg(loops);
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) p.holes.push_back({(i + 0.5) / 8, (j + 0.5) / 8});
-    run(make_domain(p), "64 square holes", st);
-  }
-  // Regular 1000-gon (rounded cos/sin; make_domain validates it).
-  {
-    std::vector<Vec2> pts;
-    for (int i = 0; i < 1000; ++i)
-      pts.push_back({std::cos(2 * std::numbers::pi * i / 1000), std::sin(2 * std::numbers::pi * i / 1000)});
-    run(polygon(pts), "regular 1000-gon", st);
-  }
+  for (const test::NamedDomain& c : test::hard_case_domains()) pqmesh::run(c.domain, c.name, st, options, k);
   test::print(st, label);
 }
 
