@@ -32,7 +32,7 @@ namespace {
 
 // The summary's "refined" line: the best refined candidate (after its quality pass), or why there is none.
 std::string refined_line(const NoSteinerStats& s) {
-  if (s.refined_target == 0) return "no refined candidate (--pipeline, or none passed the check)";
+  if (s.refined_target == 0) return "no refined candidate (--pipeline, --thesis-fans, or none passed the check)";
   return "best refined candidate (CDT refined towards " + fmt4(s.refined_target) +
          " deg, interior points only, + quality pass): min " + fmt4_degrees(s.refined_min_angle) + " deg, " +
          std::to_string(s.refined_inserted) + " points inserted, target " +
@@ -77,6 +77,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
   options.keep_better_cdt = !args.flag("--pipeline");
   if (args.flag("--pipeline")) options.refine_targets.clear();  // the thesis pipeline's own mesh
   options.thesis_fans = args.flag("--thesis-fans");
+  if (options.thesis_fans) options.refine_targets.clear();  // keeps the fans' mesh
   options.quality_pass = !args.flag("--no-quality-pass");
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/true);
   const MeshFormat format = forced ? *forced : mesh_format_from_path(output);
