@@ -67,7 +67,8 @@ def _domain(cls, domain, points, elements, markers, holes, regions):
 
 def triangulate(points=None, segments=None, segment_markers=None, holes=None, regions=None, *,
                 domain=None, max_size=None, size_field=None, refine_angle=20.0, protect_edges=False,
-                quadtree=False, no_boundary_steiner=False, keep_better_cdt=True, thesis_fans=False, quality_pass=True):
+                quadtree=False, improve=True, min_angle=None, no_boundary_steiner=False, keep_better_cdt=True,
+                thesis_fans=False, quality_pass=True):
     """Mesh a polygon with holes (`pqmesh mesh` on a 2D input); returns a TriMesh.
 
     points (N, 2), segments (S, 2) vertex ids, segment_markers (S,), holes (H, 2)
@@ -79,6 +80,11 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
     refine_angle   Delaunay refinement target in degrees, 0 (off) to 30 (--refine-angle)
     protect_edges  thesis 4.1.4-4.1.5 edge protection (--protect-edges)
     quadtree       always the quadtree mesher, never the refined CDT of the input (--quadtree)
+    improve        coarsening and smoothing after the construction that keep the angle bound
+                   (on in the CLI; --no-improve); stats["constructed_triangles"] and
+                   stats["constructed_min_angle"] describe the mesh before it
+    min_angle      the smallest angle asked for, above 0 and at most 33 degrees: the target of
+                   the refinement and of the improvement (--min-angle; replaces refine_angle)
     no_boundary_steiner  thesis ch. 5: add points only strictly inside the polygon; every
                    boundary vertex is an input vertex (--no-boundary-steiner). With it,
                    refine_angle applies to the mesh of R, and keep_better_cdt=False,
@@ -92,13 +98,19 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
     """
     domain = _domain(Domain2, domain, points, segments, segment_markers, holes, regions)
     refine_angle = _refine_angle(refine_angle)
+    if min_angle is not None:
+        if no_boundary_steiner:
+            raise ValueError("min_angle applies to the default mesher, not with no_boundary_steiner")
+        refine_angle = float(min_angle)
+        if not 0 < refine_angle <= 33:
+            raise ValueError(f"min_angle must be above 0 and at most 33 degrees, got {min_angle!r}")
     if no_boundary_steiner:
         if max_size is not None or size_field is not None or protect_edges:
             raise ValueError("max_size, size_field and protect_edges do not apply with no_boundary_steiner")
         return _pqmesh.triangulate_without_boundary_steiner(
             domain, refine_angle, bool(keep_better_cdt), bool(thesis_fans), bool(quality_pass))
     return _pqmesh.mesh_polygon(domain, _positive("max_size", max_size), size_field, refine_angle,
-                                bool(protect_edges), bool(quadtree))
+                                bool(protect_edges), bool(quadtree), bool(improve))
 
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,

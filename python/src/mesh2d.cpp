@@ -29,16 +29,21 @@ py::dict quad_stats(const QuadMeshStats& s) {
                   py::arg("refine_target_reached") = s.refine_target_reached,
                   py::arg("refined_input") = s.refined_input,
                   py::arg("refined_input_min_angle") = s.refined_input_min_angle,
-                  py::arg("refined_input_triangles") = s.refined_input_triangles);
+                  py::arg("refined_input_triangles") = s.refined_input_triangles, py::arg("improved") = s.improved,
+                  py::arg("constructed_triangles") = s.constructed_triangles,
+                  py::arg("constructed_min_angle") = s.constructed_min_angle,
+                  py::arg("improve_removed") = s.improve_removed, py::arg("improve_moved") = s.improve_moved,
+                  py::arg("improve_flips") = s.improve_flips);
 }
 
 py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py::object size_field,
-                            double refine_angle, bool protect_edges, bool quadtree) {
+                            double refine_angle, bool protect_edges, bool quadtree, bool improve) {
   QuadMeshOptions options;
   options.max_size = max_size;
   options.refine_angle_degrees = refine_angle;
   options.protect_edges = protect_edges;
   options.quadtree = quadtree;
+  options.improve = improve;
   // A size-field file (read_size_field2: "x y size" lines) or a pair (points (K, 2), sizes (K,)).
   if (!size_field.is_none()) options.size_field = to_size_field(size_field, read_size_field2, to_points2);
   QuadMeshResult result;
@@ -61,7 +66,8 @@ py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py
   mesh.attr("max_aspect_ratio") = quality.aspect_ratio.max;
   mesh.attr("stats") = quad_stats(s);
   mesh.attr("seconds") = py::dict(py::arg("tree") = s.seconds_tree, py::arg("points") = s.seconds_points,
-                                  py::arg("triangulate") = s.seconds_triangulate, py::arg("mesh") = seconds);
+                                  py::arg("triangulate") = s.seconds_triangulate,
+                                  py::arg("improve") = s.seconds_improve, py::arg("mesh") = seconds);
   return mesh;
 }
 
@@ -108,7 +114,7 @@ py::object run_no_steiner(std::shared_ptr<Domain2> domain, double refine_angle, 
 
 void bind_mesh2d(py::module_& m) {
   m.def("mesh_polygon", &run_mesh_polygon, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
-        py::arg("refine_angle"), py::arg("protect_edges"), py::arg("quadtree"),
+        py::arg("refine_angle"), py::arg("protect_edges"), py::arg("quadtree"), py::arg("improve"),
         "mesh_polygon(domain, options); see pqmesh.triangulate.");
   m.def("triangulate_without_boundary_steiner", &run_no_steiner, py::arg("domain"), py::arg("refine_angle"),
         py::arg("keep_better_cdt"), py::arg("thesis_fans"), py::arg("quality_pass"),

@@ -35,6 +35,8 @@ def test_3d_same_as_cli(tmp_path, name, options, kwargs):
 @pytest.mark.parametrize("name, options, kwargs", [
     ("square_holes.poly", [], {}),
     ("l_shape.poly", ["--max-size", "0.1", "--refine-angle", "25"], {"max_size": 0.1, "refine_angle": 25}),
+    ("comb.poly", ["--min-angle", "30"], {"min_angle": 30}),
+    ("comb.poly", ["--no-improve"], {"improve": False}),
     ("square_holes.poly", ["--no-boundary-steiner"], {"no_boundary_steiner": True}),
 ])
 def test_2d_same_as_cli(tmp_path, name, options, kwargs):

@@ -127,3 +127,24 @@ def test_deterministic():
     assert_valid(second)
     for name in ("points", "triangles", "edges", "edge_markers"):
         assert np.array_equal(getattr(first, name), getattr(second, name)), name
+
+
+def test_improvement_keeps_the_boundary_and_never_adds_triangles():
+    domain = pqmesh.read_domain(str(DATA / "2d" / "comb.poly"))
+    built, improved = pqmesh.triangulate(domain, improve=False), pqmesh.triangulate(domain)
+    assert_valid(built)
+    assert_valid(improved)
+    assert not built.stats["improved"] and improved.stats["improved"]
+    assert improved.stats["constructed_triangles"] == len(built.triangles)
+    assert len(improved.triangles) <= len(built.triangles)
+    assert improved.min_angle >= min(20.0, built.min_angle)
+    boundary = lambda m: sorted(map(tuple, m.points[m.edges].reshape(-1, 4).tolist()))  # noqa: E731
+    assert boundary(improved) == boundary(built)
+
+
+def test_min_angle_30_on_the_comb():
+    mesh = pqmesh.triangulate(pqmesh.read_domain(str(DATA / "2d" / "comb.poly")), min_angle=30)
+    assert_valid(mesh)
+    assert mesh.min_angle >= 30  # the comb has no input angle below 60 degrees
+    with pytest.raises(ValueError):
+        pqmesh.triangulate(pqmesh.read_domain(str(DATA / "2d" / "comb.poly")), min_angle=34)
