@@ -112,7 +112,12 @@ struct NoSteinerStats {
   // The bound (thesis Theorems 17, 21; SteinerFreeBound with default options).
   double g = 0;                    // radians
   double constant = kSteinerFreeBoundConstant;
-  double upper_bound = 0;          // min(pi/3, constant * g): no Steiner-free triangulation does better
+  double alpha = 0;                // the smallest interior angle of P at an input vertex, radians
+  // min(pi/3, constant * g, alpha): no triangulation without boundary Steiner
+  // points does better (alpha: every input vertex stays a vertex, and the
+  // angles at V of the triangles in its corner sum to alpha_V;
+  // docs/algorithm/nosteiner2d.md "Refined candidates").
+  double upper_bound = 0;
   double min_angle = 0;            // achieved, radians (of the output)
   double pipeline_min_angle = 0;   // of the Full / QOnly / Cdt mesh before keep_better_cdt (after quality_pass)
   double construction_min_angle = 0;  // the same before quality_pass (the thesis's construction)

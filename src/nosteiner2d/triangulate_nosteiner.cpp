@@ -94,12 +94,14 @@ bool passes(const TriMesh2& mesh, const Domain2& domain, std::string& why) {
   return false;
 }
 
-// Records the thesis's Steiner-free bound g (reported) and its time.
+// Records the thesis's Steiner-free bound g, the smallest input angle, the
+// upper bound they give, and the time.
 void record_bound(const Domain2& domain, NoSteinerStats& st) {
   const auto t = Clock::now();
   const SteinerFreeBound bound = steiner_free_bound(domain);  // the thesis's definition, reported
   st.g = bound.g;
-  st.upper_bound = bound.upper_bound();
+  st.alpha = bound.vertex_term;
+  st.upper_bound = std::min(bound.upper_bound(), bound.vertex_term);  // nosteiner.hpp NoSteinerStats::upper_bound
   st.seconds_bound = since(t);
 }
 

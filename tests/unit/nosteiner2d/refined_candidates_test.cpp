@@ -13,12 +13,14 @@
 #include <random>
 #include <vector>
 #include <string>
+#include <utility>
 
 #include "corpus2d.hpp"
 #include "nosteiner2d/refined_candidate.hpp"
 #include "nosteiner2d/stages.hpp"
 #include "nosteiner_run.hpp"
 #include "pqmesh/check.hpp"
+#include "predicates/predicates.hpp"
 #include "support/random_domains.hpp"
 
 namespace pqmesh {
@@ -168,6 +170,27 @@ TEST(NoSteinerCandidates, TargetBelowTheCdtIsReached) {
   const NoSteinerResult r = test::run_and_check(test::corpus_domain("square"), "square", st, o);
   EXPECT_TRUE(r.stats.target_reached);
   EXPECT_GE(r.stats.min_angle, 30 * kDeg);
+}
+
+// The upper bound min(60, C g(P), alpha) (NoSteinerStats::upper_bound;
+// docs/algorithm/nosteiner2d.md "Refined candidates") is attained when P is
+// a triangle: P itself is a triangulation without boundary Steiner points
+// with min angle alpha, and the output is never below the CDT, which is P.
+// 20 seeded random triangles (dyadic coordinates, multiples of 2^-20).
+TEST(NoSteinerUpperBound, AttainedByTriangles) {
+  std::mt19937_64 rng(5);
+  auto coordinate = [&] { return std::ldexp(static_cast<double>(rng() >> 44), -20); };  // [0, 1)
+  const NoSteinerOptions defaults;
+  for (int k = 0; k < 20; ++k) {
+    std::vector<Vec2> t = {{coordinate(), coordinate()}, {coordinate(), coordinate()}, {coordinate(), coordinate()}};
+    const Sign o = orient2d(t[0], t[1], t[2]);
+    if (o == Sign::Zero) continue;
+    if (o == Sign::Negative) std::swap(t[1], t[2]);
+    test::RunStats st;
+    const NoSteinerResult r = test::run_and_check(test::polygon(t), "triangle " + std::to_string(k), st, defaults);
+    EXPECT_NEAR(r.stats.min_angle, r.stats.upper_bound, 1e-12 * r.stats.upper_bound) << "triangle " << k;
+    EXPECT_EQ(r.stats.upper_bound, std::min(r.stats.alpha, std::min(std::numbers::pi / 3, r.stats.constant * r.stats.g)));
+  }
 }
 
 }  // namespace
