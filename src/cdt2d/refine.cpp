@@ -58,7 +58,10 @@ int Refiner::shortest_edge(int t) const {
 // the shortest edge, p = v[m+1] - v[m] is the negated vector of edge m+2 and
 // q = v[m+2] - v[m] the vector of edge m+1 (negation is exact), so the
 // values below are bit for bit those of p and q formed anew.
-bool Refiner::small_angle(int t) const {
+// The smallest angle of t, at the vertex opposite its shortest side
+// (shortest_edge's choice: ties to the lowest index), as the dot product of
+// its two sides and the product of their lengths: cos = dot / lengths.
+std::pair<double, double> Refiner::smallest_angle_terms(int t) const {
   const auto& v = tri_.tri(t).v;
   Vec2 d[3];
   double l[3];
@@ -66,11 +69,21 @@ bool Refiner::small_angle(int t) const {
   for (int i = 0; i < 3; ++i) {
     d[i] = pts_[v[next3(i)]] - pts_[v[prev3(i)]];
     l[i] = dot(d[i], d[i]);
-    if (l[i] < l[m]) m = i;  // shortest_edge's choice: ties to the lowest index
+    if (l[i] < l[m]) m = i;
   }
   const Vec2 p{-d[prev3(m)].x, -d[prev3(m)].y}, q = d[next3(m)];
-  const double lp = l[prev3(m)], lq = l[next3(m)];
-  return dot(p, q) > cos_target_ * std::sqrt(lp * lq);
+  return {dot(p, q), std::sqrt(l[prev3(m)] * l[next3(m)])};
+}
+
+// The queue's key: the cosine of t's smallest angle.
+double Refiner::cos_smallest(int t) const {
+  const auto [d, lengths] = smallest_angle_terms(t);
+  return d / lengths;
+}
+
+bool Refiner::small_angle(int t) const {
+  const auto [d, lengths] = smallest_angle_terms(t);
+  return d > cos_target_ * lengths;
 }
 
 // Inside triangles are never ghosts (refine_ops.cpp); the ghost test is a guard.
@@ -346,7 +359,7 @@ void Refiner::run(RefineResult& out) {
   bool capped = false;
   for (;;) {
     if (inserted_ >= cap_) {
-      capped = seg_head_ < segq_.size() || bad_head_ < bad_.size();
+      capped = seg_head_ < segq_.size() || !worst_.empty();
       break;
     }
     if (seg_head_ < segq_.size()) {
@@ -354,8 +367,9 @@ void Refiner::run(RefineResult& out) {
       split_subsegment(u, v);
       continue;
     }
-    if (bad_head_ == bad_.size()) break;
-    const QueuedTri q = bad_[bad_head_++];
+    if (worst_.empty()) break;
+    const QueuedTri q = bad_[static_cast<std::size_t>(-worst_.top().second)];
+    worst_.pop();
     if (!still_there(q) || !is_bad(q.t) || is_excused(q.t)) continue;
     const Vec2 c = new_point_for(q.t);
     if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
@@ -368,7 +382,7 @@ void Refiner::run(RefineResult& out) {
     if (w.end == Walk::End::Constraint) {
       const auto& T = tri_.tri(tri_of(w.h));
       const int u = T.v[next3(edge_of(w.h))], v = T.v[prev3(edge_of(w.h))];
-      if (split_subsegment(u, v) && still_there(q)) bad_.push_back(q);
+      if (split_subsegment(u, v) && still_there(q)) requeue(q);
       continue;
     }
     if (collect_encroached(w, c)) {
@@ -378,7 +392,7 @@ void Refiner::run(RefineResult& out) {
           segq_.push_back(e);
           any = true;
         }
-      if (any) bad_.push_back(q);  // re-examined after the splits
+      if (any) requeue(q);  // re-examined after the splits
       continue;
     }
     insert_interior(c, w);

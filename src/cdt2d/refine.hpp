@@ -15,7 +15,10 @@
 //     subsegments are split first (a queue, FIFO).
 //   - bad triangles: inside triangles with smallest angle < min_angle_degrees
 //     (a floating-point measurement; it only chooses what to improve, never
-//     validity). FIFO queue in triangle-slot order, re-validated on pop.
+//     validity). A priority queue, smallest angle first (ties: the first
+//     queued; seeded in slot order), re-validated on pop. Worst first keeps
+//     the count low at high targets: at 33 degrees on the 2D benchmark's
+//     shapes it made 1.3 to 4 times fewer points than first-in first-out.
 //     For a bad triangle the off-center (Ungor: the circumcenter, pulled
 //     towards the shortest edge so that the new triangle on that edge just
 //     meets the target) is located by a straight walk from the triangle that
@@ -94,7 +97,7 @@
 // edge split keeping the inside labels).
 // Exactness: every decision (walk, cavity incircle, encroachment, split
 // validity) is an exact predicate; constructions (off-centers, split points)
-// are doubles. Deterministic: FIFO queues seeded in slot order.
+// are doubles. Deterministic: queues seeded in slot order, ties by queue order.
 //
 // Vertices on segments: an input point whose constraints all belong to one
 // segment lies on that segment (a Steiner point of the caller); the excuse

@@ -132,7 +132,7 @@ bool Refiner::try_point(const QueuedTri& q, int from, Vec2 p, double near2, int 
     return false;
   }
   insert_interior(p, wp);
-  if (still_there(q)) bad_.push_back(q);
+  if (still_there(q)) requeue(q);
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <unordered_set>
 #include <utility>
+#include <queue>
 #include <vector>
 
 #include "cdt2d/refine.hpp"
@@ -93,9 +94,18 @@ class Refiner {
   bool splittable(int u, int v) const;
   bool split_subsegment(int u, int v);
   void after_insertion(int p);
+  std::pair<double, double> smallest_angle_terms(int t) const;
+  double cos_smallest(int t) const;
+  // Queues a bad triangle: recorded in bad_ (the final check visits every
+  // queued slot) and ordered in worst_ by its smallest angle, smallest first,
+  // ties to the first queued.
   void push_tri(int t) {
     const auto& T = tri_.tri(t);
-    bad_.push_back({t, {T.v[0], T.v[1], T.v[2]}});
+    requeue({t, {T.v[0], T.v[1], T.v[2]}});
+  }
+  void requeue(const QueuedTri& q) {
+    worst_.push({cos_smallest(q.t), -static_cast<std::int64_t>(bad_.size())});
+    bad_.push_back(q);
   }
   bool still_there(const QueuedTri& q) const {
     if (q.t >= tri_.triangle_count()) return false;
@@ -124,7 +134,7 @@ class Refiner {
   std::vector<std::uint8_t> sharp_;                         // per input vertex
   std::vector<std::uint64_t> sharp_pairs_;                  // pair_key of segments meeting in a sharp wedge
   std::vector<QueuedTri> bad_;
-  std::size_t bad_head_ = 0;
+  std::priority_queue<std::pair<double, std::int64_t>> worst_;  // (cos of the smallest angle, -index in bad_)
   std::vector<std::array<int, 2>> segq_;
   std::size_t seg_head_ = 0;
   std::vector<int> stamp_;  // per triangle slot: the large cavity that last visited it (collect_encroached)
