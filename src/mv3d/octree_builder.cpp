@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mv3d/united_overlap.hpp"
 #include "pqmesh/errors.hpp"
 
 namespace pqmesh::mv3d {
@@ -605,18 +606,23 @@ void OctreeBuilder::run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std
 // marks the leaves of v's component inside B with vertex_owner.
 void OctreeBuilder::center_vertices() {
   const auto& pv = domain_.plc.vertices;
-  std::vector<std::int32_t> vertex_leaf(pv.size(), -1);
-  for (const std::int32_t n : leaves_by_id())
-    for (const int v : data(n).vertices) vertex_leaf[static_cast<std::size_t>(v)] = n;
+  const std::vector<std::int32_t> vertex_leaf = vertex_leaves();
   std::vector<std::int32_t> big;
   for (std::size_t v = 0; v < pv.size(); ++v) {
     const std::int32_t b = vertex_leaf[v];
     if (b < 0) continue;
+    // Margin 1: also every larger leaf reaching into the united block, so
+    // that its leaves are no larger than b (the smaller ex(b) declares fewer
+    // of them balance-adjacent; find_united_intruders).
+    const GridBlock block = united_grid_block(tree_.key(b), united_below(b, static_cast<int>(v)));
+    const bool margin1 = options_.extended_margin == 1;
     for (bool again = true; again;) {
       again = false;
       tree_.larger_neighbours(b, big);
       for (const std::int32_t n : big) {
-        if (!tree_.is_leaf(n) || tree_.is_protected(n) || !balance_adjacent(n, b)) continue;
+        if (!tree_.is_leaf(n) || tree_.is_protected(n)) continue;
+        if (!balance_adjacent(n, b) && !(margin1 && data(n).has_component && meets_block(tree_.key(n), block)))
+          continue;
         split_and_balance(n, OctPhase::Centering);
         ++stats_.splits_centering;
         again = true;
@@ -625,31 +631,83 @@ void OctreeBuilder::center_vertices() {
     }
     const Cube s = cube(b);
     const double h = tree_.side(b);
-    const Vec3 p = pv[v];
-    const double x0 = p.x < s.lo.x + 0.5 * h ? s.lo.x - h : s.lo.x;
-    const double y0 = p.y < s.lo.y + 0.5 * h ? s.lo.y - h : s.lo.y;
-    const double z0 = p.z < s.lo.z + 0.5 * h ? s.lo.z - h : s.lo.z;
+    const unsigned below = united_below(b, static_cast<int>(v));
+    const double x0 = (below & 1u) ? s.lo.x - h : s.lo.x;
+    const double y0 = (below & 2u) ? s.lo.y - h : s.lo.y;
+    const double z0 = (below & 4u) ? s.lo.z - h : s.lo.z;
     vertex_box_[v] = {{x0, y0, z0}, {x0 + 2 * h, y0 + 2 * h, z0 + 2 * h}};
     ++stats_.vertex_boxes;
     protect(b, OctPhase::Centering);
   }
-  std::vector<std::int32_t> found;
+  std::vector<std::int32_t> found, cell;
   for (std::size_t v = 0; v < pv.size(); ++v) {
     const std::int32_t b = vertex_leaf[v];
     if (b < 0) continue;
     const Cube& r = vertex_box_[v];
     const double h = tree_.side(b);
-    for (int k = 0; k < 8; ++k) {
+    // The leaves holding the centres of B's eight cells; margin 1: every leaf
+    // meeting B (deeper leaves in a corner of a cell included).
+    found.clear();
+    if (options_.extended_margin == 1) found = leaves_in_block(b, static_cast<int>(v));
+    for (int k = 0; k < 8 && options_.extended_margin != 1; ++k) {
       tree_.leaves_containing(
-          {r.lo.x + (0.5 + (k & 1)) * h, r.lo.y + (0.5 + ((k >> 1) & 1)) * h, r.lo.z + (0.5 + (k >> 2)) * h}, found);
-      for (const std::int32_t n : found) {
-        const Cube s = cube(n);
-        const bool inside = s.lo.x >= r.lo.x && s.lo.y >= r.lo.y && s.lo.z >= r.lo.z && s.hi.x <= r.hi.x &&
-                            s.hi.y <= r.hi.y && s.hi.z <= r.hi.z;
-        if (inside && data(n).has_component && (n == b || balance_adjacent(b, n)))
-          own_data(n).vertex_owner = static_cast<int>(v);
-      }
+          {r.lo.x + (0.5 + (k & 1)) * h, r.lo.y + (0.5 + ((k >> 1) & 1)) * h, r.lo.z + (0.5 + (k >> 2)) * h}, cell);
+      found.insert(found.end(), cell.begin(), cell.end());
     }
+    for (const std::int32_t n : found) {
+      const Cube s = cube(n);
+      const bool inside = s.lo.x >= r.lo.x && s.lo.y >= r.lo.y && s.lo.z >= r.lo.z && s.hi.x <= r.hi.x &&
+                          s.hi.y <= r.hi.y && s.hi.z <= r.hi.z;
+      if (!inside || !data(n).has_component || (n != b && !balance_adjacent(b, n))) continue;
+      const int owner = data(n).vertex_owner;
+      if (owner >= 0 && owner != static_cast<int>(v)) united_clashes_.push_back({n, owner, static_cast<int>(v)});
+      own_data(n).vertex_owner = static_cast<int>(v);
+    }
+  }
+}
+
+std::vector<std::int32_t> OctreeBuilder::vertex_leaves() const {
+  std::vector<std::int32_t> vertex_leaf(domain_.plc.vertices.size(), -1);
+  for (const std::int32_t n : leaves_by_id())
+    for (const int v : data(n).vertices) vertex_leaf[static_cast<std::size_t>(v)] = n;
+  return vertex_leaf;
+}
+
+// Lemma 1: the block's centre is the grid corner nearest v, per axis the
+// lower one when v lies below the middle of leaf b.
+unsigned OctreeBuilder::united_below(std::int32_t b, int v) const {
+  const Cube s = cube(b);
+  const double h = tree_.side(b);
+  const Vec3 p = domain_.plc.vertices[static_cast<std::size_t>(v)];
+  return (p.x < s.lo.x + 0.5 * h ? 1u : 0u) | (p.y < s.lo.y + 0.5 * h ? 2u : 0u) | (p.z < s.lo.z + 0.5 * h ? 4u : 0u);
+}
+
+// With extended boxes of margin 1 two vertices may end two leaves apart, and
+// the united blocks centering would record for them overlap
+// (united_overlap.hpp). Until none do: split the leaves holding the vertices
+// of the overlapping blocks (phase Vertex) and run the vertex phase again.
+void OctreeBuilder::separate_united_boxes() {
+  for (;;) {
+    const std::vector<std::int32_t> vertex_leaf = vertex_leaves();
+    std::vector<GridBlock> blocks;
+    std::vector<std::int32_t> leaf_of_block;
+    for (std::size_t v = 0; v < vertex_leaf.size(); ++v) {
+      const std::int32_t b = vertex_leaf[v];
+      if (b < 0) continue;
+      blocks.push_back(united_grid_block(tree_.key(b), united_below(b, static_cast<int>(v))));
+      leaf_of_block.push_back(b);
+    }
+    const std::vector<std::size_t> hits = overlapping_blocks(blocks);
+    if (hits.empty()) return;
+    for (const std::size_t i : hits) {
+      const std::int32_t n = leaf_of_block[i];
+      if (!tree_.is_leaf(n)) continue;  // split meanwhile by balancing
+      if (tree_.level(n) >= tree_.max_level())
+        throw InternalError("mv3d octree: refinement reached the deepest representable level (united boxes)");
+      split_and_balance(n, OctPhase::Vertex);
+      ++stats_.splits_united;
+    }
+    run_phase(OctPhase::Vertex, &OctreeBuilder::vertex_crowded);
   }
 }
 
@@ -737,6 +795,7 @@ void OctreeBuilder::build() {
   run_phase(OctPhase::Size, &OctreeBuilder::size_crowded);
   done();
   run_phase(OctPhase::Vertex, &OctreeBuilder::vertex_crowded);
+  if (options_.extended_margin == 1) separate_united_boxes();
   done();
   center_vertices();
   done();
@@ -751,6 +810,7 @@ void OctreeBuilder::build() {
   if (options_.separate) separate(OctPhase::FacetSeparate);
   done();
   protect_boxes(true);
+  if (options_.extended_margin == 1) find_united_intruders();
   done();
   for (const std::int32_t n : leaves_by_id()) {
     ++stats_.leaves;

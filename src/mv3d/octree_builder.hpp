@@ -22,6 +22,13 @@
 //                 the block get vertex_owner (as in 2D,
 //                 docs/algorithm/quad2d.md "Phases": no Tree::merge, so the
 //                 block still grades towards small boxes);
+//                 With extended_margin 1: before centering, the leaves of
+//                 vertices whose united blocks would overlap are split
+//                 (separate_united_boxes, united_overlap.hpp); part 1 also
+//                 splits every larger leaf reaching into the block, and the
+//                 owners are every leaf meeting the block; after the last
+//                 phase, leaves that a vertex job would mesh besides their
+//                 own are listed (united_clashes);
 //   3. edge:      split edge-crowded boxes (§4.1.4);
 //   4. edge-separate: split once every unprotected leaf holding a P edge and
 //                 its balance-adjacent leaves (§4.1.7 step 6; the set is
@@ -124,6 +131,7 @@ struct OctreeStats {
   std::int64_t splits_size = 0;
   std::int64_t splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0, splits_balance = 0;
   std::int64_t splits_edge_separate = 0, splits_facet_separate = 0;  // §4.1.7 steps 6 and 9
+  std::int64_t splits_united = 0;  // margin 1: vertex leaves split so that united boxes do not overlap
   std::int64_t duplicates = 0;
   std::int64_t leaves = 0, outside_leaves = 0, vertex_boxes = 0;
   // components() calls (the dominant cost): for children and parents at a
@@ -160,6 +168,18 @@ class OctreeBuilder {
   std::vector<std::int32_t> leaves_by_id() const;
   // The united box of vertex v (2x2x2 block, §4.1.3); lo > hi if v was not centred.
   const Cube& vertex_box(int v) const { return vertex_box_[static_cast<std::size_t>(v)]; }
+  // Leaves that two box jobs would mesh, which the box plan refuses
+  // (tet3d/boxes/box_jobs.hpp): a piece of the united boxes of two vertices
+  // (first, second), or, on the margin-1 octree, a leaf that meets first's
+  // united box B and lies in first's component of P ∩ B (or reaches out of
+  // B) without being a piece of B (second = -1; the vertex job meshes that
+  // component). Margin 1 separates the united boxes (united_overlap.hpp)
+  // but not the rest; the thesis's extended boxes leave neither kind.
+  struct UnitedClash {
+    std::int32_t leaf = -1;
+    int first = -1, second = -1;
+  };
+  const std::vector<UnitedClash>& united_clashes() const { return united_clashes_; }
   // Thesis §4.1.1: balance-adjacency of neighbours big, small (h(big) >= h(small));
   // small must lie in ex(big) (a neighbour, or a box of big's united vertex box).
   bool balance_adjacent(std::int32_t big, std::int32_t small) const;
@@ -198,6 +218,11 @@ class OctreeBuilder {
   bool facet_crowded(std::int32_t node) const;
   void run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std::int32_t) const);
   void center_vertices();
+  std::vector<std::int32_t> vertex_leaves() const;  // per P vertex: the leaf centering uses, -1 if none
+  unsigned united_below(std::int32_t b, int v) const;  // bit a: v's united box extends below leaf b along a
+  void separate_united_boxes();
+  std::vector<std::int32_t> leaves_in_block(std::int32_t b, int v) const;  // leaves meeting v's united box
+  void find_united_intruders();
   // Leaves meeting P that hold a P edge (Edge) or a P facet (Facet), outside
   // every protected box, with their balance-adjacent unprotected leaves.
   std::vector<std::int32_t> separation_set(bool facets) const;
@@ -214,6 +239,7 @@ class OctreeBuilder {
   mutable OctreeStats stats_;  // mutable: const queries count their components() calls
   std::vector<NodeData3> data_;
   std::vector<Cube> vertex_box_;
+  std::vector<UnitedClash> united_clashes_;
   std::vector<std::vector<int>> facet_vertices_;  // sorted vertex ids of each facet (all loops)
   FacetPairEdges facet_pair_edges_;
   mutable std::vector<std::unique_ptr<CubeComponents>> ex_cache_;  // per node id, see cached_extended

@@ -58,6 +58,12 @@ BoxJobs box_jobs(const mv3d::OctreeBuilder& builder) {
       default: problem(n, std::string("kind ") + mv3d::to_string(c.kind)); break;
     }
   }
+  const int first_id = domain.plc.source.first_id;
+  for (const mv3d::OctreeBuilder::UnitedClash& c : builder.united_clashes())
+    problem(c.leaf, c.second >= 0 ? "a piece of the united boxes of vertices " + std::to_string(c.first + first_id) +
+                                        " and " + std::to_string(c.second + first_id)
+                                  : "in the component of vertex " + std::to_string(c.first + first_id) +
+                                        " in its united box, not a piece of it");
   std::sort(out.problems.begin(), out.problems.end());
   out.problems.erase(std::unique(out.problems.begin(), out.problems.end()), out.problems.end());
   std::sort(out.problem_leaves.begin(), out.problem_leaves.end());

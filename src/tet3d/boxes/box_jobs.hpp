@@ -12,7 +12,8 @@
 // Not meshable, listed in `problems` (the mesh of the other jobs then has a
 // hole there): kind Other or Outside-with-component; a VertexCone leaf outside
 // every united box; a piece of a united box of another kind than VertexCone
-// or EmptyInside.
+// or EmptyInside; a leaf that a vertex job would mesh besides its own job
+// (OctreeBuilder::united_clashes).
 // A leaf meeting P inside a united box that is not a piece of it (another
 // component of a duplicated cell: the far wall of a narrow slot at its mouth)
 // gets its ordinary job by kind; the vertex box meshes cone(v) ∩ B only (its
