@@ -3,6 +3,7 @@
 // refined with split_constraints = false.
 #include "nosteiner2d/refined_candidate.hpp"
 
+#include <numbers>
 #include <utility>
 
 #include "cdt2d/refine.hpp"
@@ -35,6 +36,16 @@ RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees,
   out.mesh.triangles = std::move(r.triangles);
   out.mesh.triangle_markers.assign(out.mesh.triangles.size(), kRegionRefined);
   return out;
+}
+
+std::vector<QualityPassOptions> refined_pass_variants(double target_degrees) {
+  QualityPassOptions keep;
+  keep.coarsen = false;
+  QualityPassOptions smooth = keep;
+  smooth.smoothing_rounds = 2;
+  smooth.final_smoothing_sweeps = 2;
+  smooth.smoothing_below = target_degrees * std::numbers::pi / 180;
+  return {QualityPassOptions{}, keep, smooth};
 }
 
 }  // namespace pqmesh::detail

@@ -7,6 +7,9 @@
 // constraint splits"; Triangle's -Y). Every new point lies strictly inside P,
 // so dP stays split exactly at the input vertices.
 #include <cstddef>
+#include <vector>
+
+#include "improve2d/quality_pass.hpp"
 
 #include "pqmesh/domain.hpp"
 #include "pqmesh/mesh.hpp"
@@ -36,5 +39,16 @@ std::size_t refined_point_cap(const Domain2& domain);
 // the refinement loop, linear in the points inserted apart from the walks
 // and cavities (local on graded meshes).
 RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees, std::size_t max_new_points);
+
+// The quality-pass settings tried on each refined candidate, in this order
+// (each on a copy of the candidate; the caller keeps the first maximum):
+//   0: the default pass (it also removes the Steiner vertices it can);
+//   1: no vertex removed (flips and moves only): the refinement's points stay;
+//   2: as 1, with two rounds of smoothing sweeps and two final sweeps over the
+//      vertices whose star's smallest angle is below the target.
+// The default pass coarsens greedily against the mesh's current smallest
+// angle, which can undo the refinement where it was needed (measured:
+// docs/MEASUREMENTS.md "No boundary Steiner points").
+std::vector<QualityPassOptions> refined_pass_variants(double target_degrees);
 
 }  // namespace pqmesh::detail

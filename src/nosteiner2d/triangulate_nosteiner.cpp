@@ -236,9 +236,11 @@ void mesh_from_q(const PolygonQ& q, const Domain2& domain, const NoSteinerOption
 // mesh before the pass is kept (and the reason appended to `reason`) when
 // the output fails the checker. Adds its verify time to st.seconds_verify.
 detail::QualityPassStats checked_quality_pass(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh,
-                                              NoSteinerStats& st, std::string& reason) {
+                                              NoSteinerStats& st, std::string& reason,
+                                              const detail::QualityPassOptions& pass_options = {}) {
   TriMesh2 before = mesh;
-  const detail::QualityPassStats pass = detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()));
+  const detail::QualityPassStats pass =
+      detail::improve_min_angle(mesh, int(domain.pslg.vertices.size()), pass_options);
   if (options.verify) {  // valid by construction (quality_pass.hpp); checked like every stage
     const auto t = Clock::now();
     std::string why;
@@ -273,10 +275,11 @@ std::string degrees_text(double degrees) {
 }
 
 // The refined candidates (options.refine_targets, in order; refined_candidate.hpp),
-// each + the quality pass (options.quality_pass) and, with options.verify,
-// dropped when it fails the checker. The best one (first maximum) is
-// recorded in st.refined_*; it replaces `mesh` (min angle `best`, updated;
-// st.path Refined) when its min angle is strictly larger.
+// each + the quality pass (options.quality_pass: every setting of
+// detail::refined_pass_variants on a copy, in order) and, with
+// options.verify, dropped when it fails the checker. The best one (first
+// maximum) is recorded in st.refined_*; it replaces `mesh` (min angle
+// `best`, updated; st.path Refined) when its min angle is strictly larger.
 void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, double& best,
                             NoSteinerStats& st) {
   const auto t = Clock::now();
@@ -284,26 +287,31 @@ void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& optio
       options.refine_max_points != 0 ? options.refine_max_points : detail::refined_point_cap(domain);
   bool any = false;
   for (const double target : options.refine_targets) {
-    detail::RefinedCandidate c = detail::refined_candidate(domain, target, cap);
-    std::string why;
-    if (options.quality_pass) checked_quality_pass(domain, options, c.mesh, st, why);
-    if (options.verify && !passes(c.mesh, domain, why)) continue;
-    const double angle = min_triangle_angle(c.mesh);
-    if (!any || angle > st.refined_min_angle) {
-      any = true;
-      st.refined_min_angle = angle;
-      st.refined_target = target;
-      st.refined_inserted = std::int64_t(c.inserted);
-      st.refined_target_reached = c.target_reached;
-    }
-    if (angle > best) {
-      st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") +
-                           "the refined candidate (target " + degrees_text(target) +
-                           " deg) has the larger min angle (" + std::to_string(angle) + " rad against " +
-                           std::to_string(best) + " rad)";
-      st.path = NoSteinerPath::Refined;
-      best = angle;
-      mesh = std::move(c.mesh);
+    const detail::RefinedCandidate c = detail::refined_candidate(domain, target, cap);
+    std::vector<detail::QualityPassOptions> variants = detail::refined_pass_variants(target);
+    if (!options.quality_pass) variants.resize(1);  // the candidate as refined (no pass below)
+    for (const detail::QualityPassOptions& variant : variants) {
+      TriMesh2 m = c.mesh;
+      std::string why;
+      if (options.quality_pass) checked_quality_pass(domain, options, m, st, why, variant);
+      if (options.verify && !passes(m, domain, why)) continue;
+      const double angle = min_triangle_angle(m);
+      if (!any || angle > st.refined_min_angle) {
+        any = true;
+        st.refined_min_angle = angle;
+        st.refined_target = target;
+        st.refined_inserted = std::int64_t(c.inserted);
+        st.refined_target_reached = c.target_reached;
+      }
+      if (angle > best) {
+        st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") +
+                             "the refined candidate (target " + degrees_text(target) +
+                             " deg) has the larger min angle (" + std::to_string(angle) + " rad against " +
+                             std::to_string(best) + " rad)";
+        st.path = NoSteinerPath::Refined;
+        best = angle;
+        mesh = std::move(m);
+      }
     }
   }
   st.seconds_refine = since(t);
