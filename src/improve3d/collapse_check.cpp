@@ -65,7 +65,7 @@ bool Collapser::try_collapse(int u, int v) {
   if (!quality_allows()) return refuse(Refusal::Quality);
   list_new_neighbours();
   mesh_.apply({u_, v_, dying_, moving_, new_aspect_, dying_faces_, moving_faces_});
-  for (Gathered* g : {&u_tets_, &v_tets_, &u_faces_, &v_faces_}) g->owner = -1;
+  forget();
   return true;
 }
 

@@ -37,6 +37,11 @@ class Collapser {
   bool try_collapse(int u, int v);
   // The last refusal holds for the edge either way round (the link
   // condition is symmetric in u and v; a missing edge is missing both ways).
+  // Forgets the stars gathered for the last edge tried: call after the mesh
+  // changed by anything but try_collapse (smoothing, flips).
+  void forget() {
+    for (Gathered* g : {&u_tets_, &v_tets_, &u_faces_, &v_faces_}) g->owner = -1;
+  }
   bool refused_both_ways() const { return last_refusal_ == Refusal::NoEdge || last_refusal_ == Refusal::Link; }
   // After a collapse: the vertices whose stars changed (the neighbours of u,
   // v among them) and the vertices that became neighbours of v.

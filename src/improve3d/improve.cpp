@@ -1,6 +1,7 @@
 // improve_mesh (improve.hpp): passes of shortest-edge-first collapses.
 #include "improve3d/improve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -201,6 +202,51 @@ class Coarsener {
   EdgeQueue queue_;
 };
 
+// The collapse passes of one round (a fresh Coarsener: every edge is tried
+// again, the stars having changed by smoothing and flips). Returns the collapses.
+std::int64_t collapse_passes(CollapseMesh& work, const detail::VertexClasses& classes, Collapser& collapser,
+                             ImproveStats& stats) {
+  collapser.forget();
+  Coarsener coarsener(work, classes, collapser);
+  std::int64_t collapses = 0;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    const PassResult result = coarsener.pass();
+    ++stats.passes;
+    collapses += result.collapses;
+    if (static_cast<double>(result.collapses) < kMinYield * static_cast<double>(result.edges) || result.collapses == 0)
+      break;
+  }
+  stats.collapses += collapses;
+  return collapses;
+}
+
+// Smoothing then flips, in rounds (see kMaxRounds). Returns the vertices
+// moved plus the flips done.
+std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const detail::VertexClasses& classes,
+                             const detail::SizeBound& size, const ImproveOptions& options, ImproveStats& stats) {
+  std::vector<std::int8_t> mobility;
+  if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
+  detail::Smoother smoother(work, std::move(mobility), size, options.aspect_cap);
+  detail::Flipper flipper(work, size, options.aspect_cap);
+  std::int64_t flips = 0;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    for (int pass = 0; options.smooth && pass < kMaxSmoothPasses; ++pass)
+      if (smoother.pass() == 0) break;
+    std::int64_t flipped = 0;
+    for (int pass = 0; options.flip && pass < kMaxFlipPasses; ++pass) {
+      const std::int64_t done = flipper.pass();
+      if (done == 0) break;
+      flipped += done;
+      smoother.touched(flipper.created());
+    }
+    flips += flipped;
+    if (flipped == 0) break;
+  }
+  stats.flips += flips;
+  stats.smoothed += smoother.moved_vertices();
+  return smoother.moved_vertices() + flips;
+}
+
 }  // namespace
 
 ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int>& face_facets,
@@ -212,41 +258,18 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   const detail::VertexClasses classes = detail::classify_vertices(domain, mesh, face_facets);
   const detail::SizeBound size(options.max_size, options.size_points, options.sizes);
   Collapser collapser(work, classes, size, {options.aspect_cap, options.target_aspect}, memo);
-  Coarsener coarsener(work, classes, collapser);
 
   ImproveStats stats;
   stats.tetrahedra_before = work.live_tets();
   stats.vertices_before = work.live_vertices();
   stats.worst_aspect_before = work.worst_aspect();
   stats.min_dihedral_before = work.min_dihedral();  // measured by the constructor
-  while (stats.passes < kMaxPasses) {
-    const PassResult pass = coarsener.pass();
-    const std::int64_t done = pass.collapses;
-    ++stats.passes;
-    stats.collapses += done;
-    if (static_cast<double>(done) < kMinYield * static_cast<double>(pass.edges) || done == 0) break;
-  }
-  work.measure_dihedrals(memo);
-  stats.min_dihedral_collapsed = work.min_dihedral();
-  if (options.smooth || options.flip) {
-    std::vector<std::int8_t> mobility;
-    if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
-    detail::Smoother smoother(work, std::move(mobility), size, options.aspect_cap);
-    detail::Flipper flipper(work, size, options.aspect_cap);
-    for (int round = 0; round < kMaxRounds; ++round) {
-      for (int pass = 0; options.smooth && pass < kMaxSmoothPasses; ++pass)
-        if (smoother.pass() == 0) break;
-      std::int64_t flipped = 0;
-      for (int pass = 0; options.flip && pass < kMaxFlipPasses; ++pass) {
-        const std::int64_t done = flipper.pass();
-        if (done == 0) break;
-        flipped += done;
-        smoother.touched(flipper.created());
-      }
-      stats.flips += flipped;
-      if (flipped == 0) break;
-    }
-    stats.smoothed = smoother.moved_vertices();
+  for (int round = 0; round < std::max(1, options.rounds); ++round) {
+    const std::int64_t collapses = collapse_passes(work, classes, collapser, stats);
+    work.measure_dihedrals(memo);  // collapses do not keep them; smoothing and flips need them
+    if (round == 0) stats.min_dihedral_collapsed = work.min_dihedral();
+    if (round > 0 && collapses == 0) break;
+    if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, stats) == 0) break;
   }
   stats.min_dihedral_after = work.min_dihedral();
   stats.tetrahedra_after = work.live_tets();

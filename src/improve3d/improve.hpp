@@ -22,7 +22,9 @@
 //
 // After the collapses, passes of vertex smoothing (smooth.hpp) and of 2-3 / 3-2
 // flips of interior faces and edges (flips.hpp) raise the minimum dihedral
-// angle: each accepted operation keeps every changed tetrahedron positive
+// angle; then the collapses run again (smoothing and flips make room for
+// them), for ImproveOptions::rounds rounds or until a round collapses
+// nothing. Smoothing and flips: each accepted operation keeps every changed tetrahedron positive
 // (exact orient3d), does not raise the changed region's worst aspect ratio
 // (and keeps it <= aspect_cap), raises its minimum dihedral angle by a fixed
 // least gain, and keeps the boundary (smoothing moves only interior vertices
@@ -55,15 +57,18 @@ struct ImproveOptions {
   // Vertex smoothing and flips after the collapses (see above).
   bool smooth = true;
   bool flip = true;
+  // Rounds of (collapses, smoothing and flips); a round after the first runs
+  // only when the one before collapsed something (and smoothed or flipped).
+  int rounds = 3;
 };
 
 struct ImproveStats {
   std::int64_t tetrahedra_before = 0, tetrahedra_after = 0, vertices_before = 0, vertices_after = 0;
   std::int64_t collapses = 0, passes = 0;
   double worst_aspect_before = 0, worst_aspect_after = 0, seconds = 0;
-  // Vertices moved by smoothing (each counted once); flips done (2-3 and 3-2).
+  // Vertices moved by smoothing (each counted once per round); flips done (2-3 and 3-2).
   std::int64_t smoothed = 0, flips = 0;
-  // Minimum dihedral angle (degrees) of the input mesh, after the collapses, and at the end.
+  // Minimum dihedral angle (degrees) of the input mesh, after the first round's collapses, and at the end.
   double min_dihedral_before = 0, min_dihedral_collapsed = 0, min_dihedral_after = 0;
 };
 
