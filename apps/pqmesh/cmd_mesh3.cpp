@@ -93,9 +93,12 @@ void print_lfs_integral_line(const Mesh3Run& run) {
   if (!run.lfs_integral) return;
   const bool sized = run.options.max_size > 0 || !run.options.size_field.points.empty();
   const double tetrahedra = static_cast<double>(run.result.mesh.tetrahedra.size());
+  const double constructed = static_cast<double>(run.result.stats.constructed_tetrahedra);
+  const auto per_i3 = [&](double count) { return run.lfs.value > 0 ? fmt4(count / run.lfs.value) : std::string("-"); };
   std::cout << "size       I3 = integral of 1/lfs^3 over P = " << fmt4(run.lfs.value) << " (" << run.lfs.cells
-            << " cells); tetrahedra / I3 = " << (run.lfs.value > 0 ? fmt4(tetrahedra / run.lfs.value) : "-")
-            << (sized ? " (I3 ignores the sizing)" : "") << '\n';
+            << " cells); tetrahedra / I3 = " << per_i3(tetrahedra);
+  if (constructed != tetrahedra) std::cout << " (construction " << per_i3(constructed) << ")";
+  std::cout << (sized ? " (I3 ignores the sizing)" : "") << '\n';
 }
 
 // Which octree made the mesh (TetSeparation) and, when lighter ones were
