@@ -99,7 +99,7 @@ const std::vector<Command>& commands() {
        "                       angle and achieved/g, the pipeline's path (full, or the q-only / cdt\n"
        "                       fallback with its reason), the CDT's min angle. When the CDT of the input\n"
        "                       has the larger min angle it is written instead (path cdt-better).\n"
-       "                       Refined candidates: the CDT refined towards 20 and 30 degrees with\n"
+       "                       Refined candidates: the CDT refined towards 20, 25, 30 degrees with\n"
        "                       interior points only (no point on a segment); the one with the larger\n"
        "                       min angle is written (path refined). --min-angle A: refine towards A\n"
        "                       instead (0 < A <= 60) and report whether A was reached, else the best\n"

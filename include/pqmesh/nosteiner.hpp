@@ -95,7 +95,7 @@ struct NoSteinerOptions {
   // the refined candidates, the CDT of P (keep_better_cdt); a later one
   // replaces an earlier one only when its min angle is strictly larger
   // (NoSteinerPath::Refined). Empty: the pipeline alone.
-  std::vector<double> refine_targets = {20, 30};
+  std::vector<double> refine_targets = {20, 25, 30};
   std::size_t refine_max_points = 0;  // cap per refinement; 0: detail::refined_point_cap (32 n + 4096)
   // A target min angle in degrees (0: none), only reported: NoSteinerStats::target_reached
   // (the CLI's --min-angle A also sets refine_targets = {A}).

@@ -111,7 +111,7 @@ TEST(RefinedCandidate, RegularThousandGonMeetsTwentyDegrees) {
   EXPECT_GE(min_triangle_angle(c.mesh), 20 * kDeg);
 }
 
-// Default options (verify, keep_better_cdt, refined candidates 20 and 30):
+// Default options (verify, keep_better_cdt, refined candidates 20, 25, 30):
 // on the 1000-gon the output is at least the 20-degree candidate, which
 // meets 20 degrees (above), and the pass never lowers it.
 TEST(NoSteinerCandidates, RegularThousandGonAtLeastTwentyDegrees) {
