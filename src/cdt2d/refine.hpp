@@ -68,7 +68,7 @@
 // apexes of ab (on its bisector, base angles 60, 45, 32 degrees) are tried,
 // then the point halfway from the midpoint of t's shortest edge to c; the
 // first that passes (a), (b) and (c) is inserted and t re-queued (for an
-// apex, (b) uses the smaller of t's shortest edge and 0.99 |a apex|, and (c)
+// apex, (b) uses the smaller of t's shortest edge and 0.99^(1/2) |a apex|, and (c)
 // skips ab). Otherwise t is given up (it stays; target_reached is then false
 // unless it is excused). Distances and angles in (b), (c) are doubles: a
 // choice between inserting and giving up, never a validity decision.
