@@ -224,7 +224,13 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
     // the facet is then enforced by (c), since a triangle assigned to f with
     // f's orientation but not inside f would leave B_f != f. Only between
     // several coplanar candidates does the exact point-in-polygon test
-    // choose (the lowest-numbered facet whose closure holds all three).
+    // choose: the lowest-numbered facet whose closure holds all three
+    // vertices and the triangle's centroid. The vertices alone do not
+    // decide: a triangle inside a facet that fills a hole of a coplanar one
+    // can have all three on the hole's loop, in both closures; its centroid
+    // (rounded, a point well inside any triangle that is not a sliver) is in
+    // one only. A choice the rounding gets wrong makes (c) fail: the checker
+    // may then reject a valid mesh, never accept an invalid one.
     int first = -1, candidates = 0;
     for (int f : grid.at(a)) {
       if (!on_plane(f, t[0]) || !on_plane(f, t[1]) || !on_plane(f, t[2])) continue;
@@ -236,7 +242,9 @@ void Checker3::assign_boundary_faces(const Domain3& d) {
       for (int f : grid.at(a)) {
         if (f < first) continue;
         if (!on_plane(f, t[0]) || !on_plane(f, t[1]) || !on_plane(f, t[2])) continue;
-        if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c)) continue;
+        if (!in_closed_facet(d, f, a) || !in_closed_facet(d, f, b) || !in_closed_facet(d, f, c) ||
+            !in_closed_facet(d, f, (1.0 / 3.0) * (a + b + c)))
+          continue;
         assigned_[i] = f;
         break;
       }
