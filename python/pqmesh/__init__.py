@@ -84,7 +84,9 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
                    (on in the CLI; --no-improve); stats["constructed_triangles"] and
                    stats["constructed_min_angle"] describe the mesh before it
     min_angle      the smallest angle asked for, above 0 and at most 33 degrees: the target of
-                   the refinement and of the improvement (--min-angle; replaces refine_angle)
+                   the refinement and of the improvement (--min-angle; replaces refine_angle);
+                   with no_boundary_steiner up to 60 degrees: the target of the refined candidate,
+                   reported in the attributes target and target_reached
     no_boundary_steiner  thesis ch. 5: add points only strictly inside the polygon; every
                    boundary vertex is an input vertex (--no-boundary-steiner). With it,
                    refine_angle applies to the mesh of R, and keep_better_cdt=False,
@@ -94,21 +96,24 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
     The result's attributes: domain, alpha (degrees), min_angle, max_angle,
     max_aspect_ratio, stats and seconds (dicts); quad mesher: angle_bound
     (the measured guarantee, degrees); no_boundary_steiner: g, upper_bound,
-    cdt_min_angle (degrees), path, fallback_reason.
+    cdt_min_angle (degrees), path, fallback_reason, target, target_reached.
     """
     domain = _domain(Domain2, domain, points, segments, segment_markers, holes, regions)
     refine_angle = _refine_angle(refine_angle)
-    if min_angle is not None:
-        if no_boundary_steiner:
-            raise ValueError("min_angle applies to the default mesher, not with no_boundary_steiner")
-        refine_angle = float(min_angle)
-        if not 0 < refine_angle <= 33:
-            raise ValueError(f"min_angle must be above 0 and at most 33 degrees, got {min_angle!r}")
     if no_boundary_steiner:
         if max_size is not None or size_field is not None or protect_edges:
             raise ValueError("max_size, size_field and protect_edges do not apply with no_boundary_steiner")
+        target = 0.0
+        if min_angle is not None:
+            target = float(min_angle)
+            if not 0 < target <= 60:
+                raise ValueError(f"min_angle must be above 0 and at most 60 degrees, got {min_angle!r}")
         return _pqmesh.triangulate_without_boundary_steiner(
-            domain, refine_angle, bool(keep_better_cdt), bool(thesis_fans), bool(quality_pass))
+            domain, refine_angle, bool(keep_better_cdt), bool(thesis_fans), bool(quality_pass), target)
+    if min_angle is not None:
+        refine_angle = float(min_angle)
+        if not 0 < refine_angle <= 33:
+            raise ValueError(f"min_angle must be above 0 and at most 33 degrees, got {min_angle!r}")
     return _pqmesh.mesh_polygon(domain, _positive("max_size", max_size), size_field, refine_angle,
                                 bool(protect_edges), bool(quadtree), bool(improve))
 

@@ -71,12 +71,20 @@ py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py
   return mesh;
 }
 
+// As cmd_mesh_nosteiner.cpp: min_angle > 0 (--min-angle) refines towards it
+// alone and reports it; keep_better_cdt = false (--pipeline) and thesis_fans
+// keep the thesis pipeline's mesh (no refined candidate).
 py::object run_no_steiner(std::shared_ptr<Domain2> domain, double refine_angle, bool keep_better_cdt, bool thesis_fans,
-                          bool quality_pass) {
+                          bool quality_pass, double min_angle) {
   NoSteinerOptions options;
   options.r_mesh.refine_angle_degrees = refine_angle;
+  if (min_angle > 0) {
+    options.min_angle_target = min_angle;
+    options.refine_targets = {min_angle};
+  }
   options.keep_better_cdt = keep_better_cdt;
   options.thesis_fans = thesis_fans;
+  if (!keep_better_cdt || thesis_fans) options.refine_targets.clear();
   options.quality_pass = quality_pass;
   NoSteinerResult result;
   QualityReport quality;
@@ -96,6 +104,8 @@ py::object run_no_steiner(std::shared_ptr<Domain2> domain, double refine_angle, 
   mesh.attr("cdt_min_angle") = s.cdt_min_angle * kDegrees;
   mesh.attr("path") = to_string(s.path);
   mesh.attr("fallback_reason") = s.fallback_reason;
+  mesh.attr("target") = s.target;
+  mesh.attr("target_reached") = s.target_reached;
   mesh.attr("stats") = py::dict(
       py::arg("pipeline_path") = to_string(s.pipeline_path), py::arg("pipeline_min_angle") = s.pipeline_min_angle * kDegrees,
       py::arg("construction_min_angle") = s.construction_min_angle * kDegrees, py::arg("ratio") = s.ratio,
@@ -117,7 +127,7 @@ void bind_mesh2d(py::module_& m) {
         py::arg("refine_angle"), py::arg("protect_edges"), py::arg("quadtree"), py::arg("improve"),
         "mesh_polygon(domain, options); see pqmesh.triangulate.");
   m.def("triangulate_without_boundary_steiner", &run_no_steiner, py::arg("domain"), py::arg("refine_angle"),
-        py::arg("keep_better_cdt"), py::arg("thesis_fans"), py::arg("quality_pass"),
+        py::arg("keep_better_cdt"), py::arg("thesis_fans"), py::arg("quality_pass"), py::arg("min_angle"),
         "triangulate_without_boundary_steiner(domain, options); see pqmesh.triangulate.");
 }
 

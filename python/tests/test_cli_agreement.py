@@ -38,6 +38,8 @@ def test_3d_same_as_cli(tmp_path, name, options, kwargs):
     ("comb.poly", ["--min-angle", "30"], {"min_angle": 30}),
     ("comb.poly", ["--no-improve"], {"improve": False}),
     ("square_holes.poly", ["--no-boundary-steiner"], {"no_boundary_steiner": True}),
+    ("square_holes.poly", ["--no-boundary-steiner", "--min-angle", "5"], {"no_boundary_steiner": True, "min_angle": 5}),
+    ("square_holes.poly", ["--no-boundary-steiner", "--pipeline"], {"no_boundary_steiner": True, "keep_better_cdt": False}),
 ])
 def test_2d_same_as_cli(tmp_path, name, options, kwargs):
     mesh = pqmesh.triangulate(pqmesh.read_domain(str(DATA / "2d" / name)), **kwargs)

@@ -148,3 +148,12 @@ def test_min_angle_30_on_the_comb():
     assert mesh.min_angle >= 30  # the comb has no input angle below 60 degrees
     with pytest.raises(ValueError):
         pqmesh.triangulate(pqmesh.read_domain(str(DATA / "2d" / "comb.poly")), min_angle=34)
+
+
+def test_min_angle_without_boundary_steiner_is_reported():
+    domain = pqmesh.read_domain(str(DATA / "2d" / "square_holes.poly"))
+    mesh = pqmesh.triangulate(domain, no_boundary_steiner=True, min_angle=5)
+    assert_valid(mesh, no_boundary_steiner=True)
+    assert mesh.target == 5
+    assert mesh.target_reached == (mesh.min_angle >= 5)
+    assert mesh.min_angle <= mesh.upper_bound + 1e-9
