@@ -1,7 +1,6 @@
 #pragma once
-// Re-triangulation of a cavity without its inner vertices, for the quality
-// post-pass (quality_pass.hpp; docs/algorithm/nosteiner2d.md "Fallbacks and the
-// CDT comparison").
+// Re-triangulation of a cavity without its inner vertices, for the 2D quality
+// pass (quality_pass.hpp; docs/algorithm/improve2d.md "The pass").
 //
 // A cavity is a set of triangles of a conforming mesh that is connected
 // across edges; its union may have holes (input holes of P, or mesh triangles

@@ -1,12 +1,12 @@
 #pragma once
-// A quality post-pass on a triangulation without boundary Steiner points (a
-// deviation beyond the thesis, docs/algorithm/nosteiner2d.md "Fallbacks and the
-// CDT comparison"): the thesis bounds the min angle of its construction by a
-// constant times g(P) (ch. 5), but the constant is small, and the placement of
-// its points (Q^c wedges, flat Q-to-R boxes) leaves angles far below what the
-// same domain allows.
+// The 2D quality pass (docs/algorithm/improve2d.md), shared by both 2D meshers:
+// the chapter-5 triangulator's post-pass (docs/algorithm/nosteiner2d.md
+// "Fallbacks and the CDT comparison": the thesis bounds the min angle of its
+// construction by a constant times g(P), but the constant is small) and the
+// default mesh's improvement stage (quad2d/improve_mesh.hpp, with a target).
 //
-// The pass repeatedly takes the triangle with the smallest angle and applies
+// Without a target (QualityPassOptions::target), after a first coarsening
+// sweep, the pass repeatedly takes the triangle with the smallest angle and applies
 // the one local change that raises the smallest angle of the triangles it
 // replaces the most (strictly above that triangle's angle, else it stops):
 //   * flip an interior edge of the triangle (the two triangles of a strictly
@@ -35,6 +35,9 @@
 //     and its inner vertices all the Steiner points, so its re-triangulation
 //     is the CDT of P. Hence the pass never stops below the CDT's min angle
 //     (it can still stop there on the step bound; never seen).
+// With a target: coarsening and smoothing sweeps, then the single changes
+// above at the worst triangle while it is below the target (no cavities, no
+// coarsening when stuck); see QualityPassOptions::target.
 //
 // Invariants (every accept decided by exact orient2d on the stored doubles):
 // every triangle stays strictly counter-clockwise; vertices with id <
