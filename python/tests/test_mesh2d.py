@@ -129,7 +129,7 @@ def test_deterministic():
         assert np.array_equal(getattr(first, name), getattr(second, name)), name
 
 
-def test_improvement_keeps_the_boundary_and_never_adds_triangles():
+def test_improvement_keeps_the_input_vertices_and_never_adds_triangles():
     domain = pqmesh.read_domain(str(DATA / "2d" / "comb.poly"))
     built, improved = pqmesh.triangulate(domain, improve=False), pqmesh.triangulate(domain)
     assert_valid(built)
@@ -138,8 +138,11 @@ def test_improvement_keeps_the_boundary_and_never_adds_triangles():
     assert improved.stats["constructed_triangles"] == len(built.triangles)
     assert len(improved.triangles) <= len(built.triangles)
     assert improved.min_angle >= min(20.0, built.min_angle)
-    boundary = lambda m: sorted(map(tuple, m.points[m.edges].reshape(-1, 4).tolist()))  # noqa: E731
-    assert boundary(improved) == boundary(built)
+    # Boundary Steiner points exactly on a segment may go: the boundary keeps its length and
+    # every input vertex (its exact shape is the checker's, in assert_valid).
+    length = lambda m: np.linalg.norm(m.points[m.edges[:, 1]] - m.points[m.edges[:, 0]], axis=1).sum()  # noqa: E731
+    assert abs(length(improved) - length(built)) <= 1e-12 * length(built)
+    assert {tuple(p) for p in domain.points.tolist()} <= {tuple(p) for p in improved.points.tolist()}
 
 
 def test_min_angle_30_on_the_comb():

@@ -11,6 +11,7 @@
 #include <queue>
 #include <utility>
 
+#include "improve2d/boundary_edges.hpp"
 #include "improve2d/cavity_cdt.hpp"
 #include "improve2d/polygon_triangulation.hpp"
 #include "improve2d/triangle_angles.hpp"
@@ -25,7 +26,7 @@ class Pass {
  public:
   Pass(TriMesh2& mesh, int first_steiner, const QualityPassOptions& options)
       : mesh_(mesh), pts_(mesh.vertices), first_steiner_(first_steiner), options_(options),
-        inc_(mesh.vertices.size()) {
+        inc_(mesh.vertices.size()), boundary_(mesh, mesh.vertices.size()) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       add(mesh.triangles[t], mesh.triangle_markers.empty() ? 0 : mesh.triangle_markers[t]);
   }
@@ -138,6 +139,49 @@ class Pass {
     std::vector<int> sorted = out.polygon;
     std::sort(sorted.begin(), sorted.end());
     return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+
+  // The star of a boundary vertex v as an open CCW chain: polygon = x_0 ...
+  // x_k for the triangles (v, x_i, x_i+1); false unless the triangles form
+  // one such chain.
+  bool open_link(int v, Link& out) {
+    out.star = star(v);
+    std::vector<std::pair<int, int>>& arcs = arcs_;
+    arcs.clear();
+    for (int t : out.star) {
+      const auto& tr = tri_[std::size_t(t)];
+      const int r = tr[0] == v ? 0 : tr[1] == v ? 1 : 2;
+      arcs.push_back({tr[std::size_t((r + 1) % 3)], tr[std::size_t((r + 2) % 3)]});
+    }
+    const auto starts_nowhere = [&](const std::pair<int, int>& a) {
+      return std::none_of(arcs.begin(), arcs.end(), [&](const auto& b) { return b.second == a.first; });
+    };
+    const auto first = std::find_if(arcs.begin(), arcs.end(), starts_nowhere);
+    out.polygon.clear();
+    if (first == arcs.end()) return false;
+    int cur = first->first;
+    for (std::size_t step = 0; step < arcs.size(); ++step) {
+      out.polygon.push_back(cur);
+      const auto it = std::find_if(arcs.begin(), arcs.end(), [&](const auto& a) { return a.first == cur; });
+      if (it == arcs.end()) return false;
+      cur = it->second;
+    }
+    out.polygon.push_back(cur);
+    std::vector<int> sorted = out.polygon;
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+
+  // v may go as a boundary vertex (QualityPassOptions::boundary_removable):
+  // its pieces a -> v -> b, its open star from b to a with two triangles or
+  // more, and a, v, b exactly collinear. Fills lk with the star.
+  bool boundary_link(int v, Link& lk) {
+    if (options_.boundary_removable.empty() || !options_.boundary_removable[std::size_t(v)]) return false;
+    const int e_in = boundary_.into(v), e_out = boundary_.from(v);
+    if (e_in < 0 || e_out < 0) return false;
+    const int a = boundary_.edge(e_in)[0], b = boundary_.edge(e_out)[1];
+    if (!open_link(v, lk) || lk.star.size() < 2 || lk.polygon.front() != b || lk.polygon.back() != a) return false;
+    return orient2d(pts_[std::size_t(a)], pts_[std::size_t(v)], pts_[std::size_t(b)]) == Sign::Zero;
   }
 
   // Min angle of the star of v with v at p; -1 when a triangle is not strictly CCW.
@@ -259,15 +303,16 @@ class Pass {
   }
 
   // Removes, in the given order, each Steiner vertex whose star polygon has a
-  // triangulation with every angle above floor_for(star, floor); returns the
-  // number removed.
+  // triangulation with every angle above floor_for(star, floor), inner ones
+  // and boundary_removable ones (boundary_link); returns the number removed.
   std::int64_t remove_above(const std::vector<int>& verts, double floor) {
     std::int64_t removed = 0;
     Link lk;
     std::vector<Vec2> q;
     std::vector<std::array<int, 3>> tris;
     for (int v : verts) {
-      if (!link(v, lk) || int(lk.star.size()) > options_.max_star) continue;
+      const bool inner = link(v, lk);
+      if ((!inner && !boundary_link(v, lk)) || int(lk.star.size()) > options_.max_star) continue;
       q.clear();
       for (int w : lk.polygon) q.push_back(pts_[std::size_t(w)]);
       const double f = floor_for(lk.star, floor);
@@ -276,6 +321,7 @@ class Pass {
       for (int s : lk.star) alive_[std::size_t(s)] = 0;
       for (const auto& x : tris)
         add({lk.polygon[std::size_t(x[0])], lk.polygon[std::size_t(x[1])], lk.polygon[std::size_t(x[2])]}, marker);
+      if (!inner) boundary_.merge_at(v);  // the polygon's side a -> b is the merged piece
       ++removed;
     }
     return removed;
@@ -559,8 +605,7 @@ class Pass {
     }
     mesh_.vertices = std::move(vertices);
     if (!mesh_.vertex_markers.empty()) mesh_.vertex_markers = std::move(vertex_markers);
-    for (auto& e : mesh_.edges)  // boundary vertices are on live triangles: never dropped
-      for (int& v : e) v = id[std::size_t(v)];
+    boundary_.write_back(id, mesh_);  // the vertices of live pieces are on live triangles
   }
 
   TriMesh2& mesh_;
@@ -575,6 +620,7 @@ class Pass {
   std::vector<char> seen_;  // scratch of grow(), all 0 between calls
   DpTables dp_;             // scratch of best_triangulation
   std::vector<std::pair<int, int>> arcs_;  // scratch of link()
+  BoundaryEdges boundary_;
   std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> heap_;
 };
 

@@ -94,6 +94,12 @@ struct QualityPassOptions {
   double smoothing_below = 0;
   // false: no vertex is removed (only moves and flips).
   bool coarsen = true;
+  // Per vertex (empty: none): a boundary vertex the coarsening sweeps may
+  // remove, merging its two boundary pieces (mesh.edges, directed with the
+  // domain on their left) into one when it lies exactly on the line through
+  // its two boundary neighbours (exact orient2d), so the domain is unchanged.
+  // For Steiner points inside an input segment only.
+  std::vector<char> boundary_removable{};
 };
 
 // Improves `mesh` in place (triangles, triangle_markers, vertices,

@@ -1,6 +1,7 @@
 // The default 2D mesh's improvement stage (improve_mesh.hpp).
 #include "quad2d/improve_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -91,14 +92,28 @@ detail::QualityPassStats improve_part(TriMesh2& mesh, const std::vector<char>& i
   return st;
 }
 
+// The boundary vertices that are not input vertices (exact coordinates).
+std::vector<char> boundary_steiner_points(const TriMesh2& mesh, std::vector<Vec2> input_vertices) {
+  const auto before = [](Vec2 p, Vec2 q) { return p.x != q.x ? p.x < q.x : p.y < q.y; };
+  std::sort(input_vertices.begin(), input_vertices.end(), before);
+  std::vector<char> removable(mesh.vertices.size(), 0);
+  for (const auto& e : mesh.edges)
+    for (const int v : e)
+      removable[std::size_t(v)] =
+          !std::binary_search(input_vertices.begin(), input_vertices.end(), mesh.vertices[std::size_t(v)], before);
+  return removable;
+}
+
 }  // namespace
 
-ImproveStats improve_mesh(TriMesh2& mesh, double target_degrees, bool coarsen) {
-  const detail::QualityPassOptions options = pass_options(target_degrees, coarsen);
+ImproveStats improve_mesh(TriMesh2& mesh, const std::vector<Vec2>& input_vertices, double target_degrees,
+                          bool coarsen) {
+  detail::QualityPassOptions options = pass_options(target_degrees, coarsen);
   if (!coarsen) {
     const detail::QualityPassStats pass = improve_part(mesh, band_stars(mesh, options.smoothing_below), options);
     return {0, pass.moves, pass.flips};
   }
+  options.boundary_removable = boundary_steiner_points(mesh, input_vertices);
   const bool had_markers = !mesh.triangle_markers.empty();
   // first_steiner 0: every vertex may change whose star is a disk around it,
   // i.e. every interior vertex (P's input vertices are all on its boundary).

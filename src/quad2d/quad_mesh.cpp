@@ -246,7 +246,7 @@ namespace {
 
 // The improvement stage of mesh_polygon (quad2d/improve_mesh.hpp) on result's
 // mesh, with its figures in the stats. No removal under a size bound.
-void improve(const QuadMeshOptions& options, bool sized, QuadMeshResult& result) {
+void improve(const Domain2& domain, const QuadMeshOptions& options, bool sized, QuadMeshResult& result) {
   QuadMeshStats& stats = result.stats;
   const QualityReport before = quality_report(result.mesh);
   stats.constructed_triangles = before.elements;
@@ -258,7 +258,7 @@ void improve(const QuadMeshOptions& options, bool sized, QuadMeshResult& result)
   // output's smallest angle is at least min(target, the construction's),
   // hence at least the bound the construction met.
   const double target = std::max(20.0, options.refine_angle_degrees);
-  const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, target, !sized);
+  const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, domain.pslg.vertices, target, !sized);
   stats.improved = true;
   stats.improve_removed = is.removed;
   stats.improve_moved = is.moved;
@@ -288,7 +288,7 @@ QuadMeshResult construct(const Domain2& domain, const QuadMeshOptions& options, 
 QuadMeshResult mesh_polygon(const Domain2& domain, const QuadMeshOptions& options) {
   const bool sized = options.max_size > 0 || !options.size_field.points.empty();
   QuadMeshResult result = construct(domain, options, sized);
-  improve(options, sized, result);
+  improve(domain, options, sized, result);
   return result;
 }
 
