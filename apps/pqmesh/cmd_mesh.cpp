@@ -148,9 +148,8 @@ void print_construction(const MeshRun& run) {
 // it (bins of 5 degrees from 0 to 60: a smallest angle is at most 60).
 void print_improvement(const MeshRun& run) {
   const QuadMeshStats& s = run.result.stats;
-  const double target = std::max(20.0, run.options.refine_angle_degrees);
   if (s.improved)
-    std::cout << "improve    target " << fmt(target) << " deg: " << s.constructed_triangles << " -> "
+    std::cout << "improve    target " << fmt(s.improve_target_degrees) << " deg: " << s.constructed_triangles << " -> "
               << run.result.mesh.triangles.size() << " triangles (" << s.improve_removed << " vertices removed, "
               << s.improve_moved << " moved, " << s.improve_flips << " flips); min angle "
               << fmt4(s.constructed_min_angle) << " -> " << fmt4(run.min_angle.min) << " deg\n";

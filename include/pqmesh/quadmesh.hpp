@@ -47,10 +47,11 @@ struct QuadMeshOptions {
   bool quadtree = false;
   // mesh_polygon only: the improvement stage after the construction
   // (docs/algorithm/quad2d.md "Improvement"): coarsening, smoothing and flips
-  // towards a target angle theta = max(20, refine_angle_degrees) degrees that
-  // never take the smallest angle below min(theta, the construction's) and
-  // never replace a triangle at theta or above by a worse one. Since the
-  // angle bound is at most 20 degrees, it still holds. CLI --no-improve.
+  // towards a target angle theta (refine_angle_degrees, or 20 when refinement
+  // is off, and at least quad_mesh_angle_bound) that never take the smallest
+  // angle below min(theta, the construction's) and never replace a triangle
+  // at theta or above by a worse one, so the angle bound still holds. CLI
+  // --no-improve.
   bool improve = true;
 };
 
@@ -88,6 +89,7 @@ struct QuadMeshStats {
   double constructed_min_angle = 0;  // degrees
   std::vector<std::int64_t> constructed_angle_counts;
   std::int64_t improve_removed = 0, improve_moved = 0, improve_flips = 0;
+  double improve_target_degrees = 0;  // theta (QuadMeshOptions::improve)
   double seconds_improve = 0;
 };
 

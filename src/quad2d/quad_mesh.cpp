@@ -244,6 +244,16 @@ QuadMeshResult quad_mesh(const Domain2& domain, const QuadMeshOptions& options) 
 
 namespace {
 
+// The improvement stage's target angle (degrees): the refinement's angle, or
+// 20 when refinement is off, raised to the angle bound the construction meets
+// (quad_mesh_angle_bound): the output's smallest angle is at least min(target,
+// the construction's), hence at least that bound.
+double improve_target(const Domain2& domain, const QuadMeshOptions& options) {
+  if (options.refine_angle_degrees <= 0) return 20;
+  const double alpha = compute_alpha(domain.pslg.vertices, domain.loops).degrees();
+  return std::max(options.refine_angle_degrees, quad_mesh_angle_bound(alpha, options.refine_angle_degrees));
+}
+
 // The improvement stage of mesh_polygon (quad2d/improve_mesh.hpp) on result's
 // mesh, with its figures in the stats. No removal under a size bound.
 void improve(const Domain2& domain, const QuadMeshOptions& options, bool sized, QuadMeshResult& result) {
@@ -254,10 +264,8 @@ void improve(const Domain2& domain, const QuadMeshOptions& options, bool sized, 
   stats.constructed_angle_counts = before.min_angle_hist.counts;
   if (!options.improve) return;
   const auto t0 = Clock::now();
-  // At least 20 degrees, the largest value of quad_mesh_angle_bound: the
-  // output's smallest angle is at least min(target, the construction's),
-  // hence at least the bound the construction met.
-  const double target = std::max(20.0, options.refine_angle_degrees);
+  const double target = improve_target(domain, options);
+  stats.improve_target_degrees = target;
   const quad2d::ImproveStats is = quad2d::improve_mesh(result.mesh, domain.pslg.vertices, target, !sized);
   stats.improved = true;
   stats.improve_removed = is.removed;
