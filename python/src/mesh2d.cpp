@@ -33,7 +33,7 @@ py::dict quad_stats(const QuadMeshStats& s) {
                   py::arg("constructed_triangles") = s.constructed_triangles,
                   py::arg("constructed_min_angle") = s.constructed_min_angle,
                   py::arg("improve_removed") = s.improve_removed, py::arg("improve_moved") = s.improve_moved,
-                  py::arg("improve_flips") = s.improve_flips);
+                  py::arg("improve_flips") = s.improve_flips, py::arg("improve_target") = s.improve_target_degrees);
 }
 
 py::object run_mesh_polygon(std::shared_ptr<Domain2> domain, double max_size, py::object size_field,

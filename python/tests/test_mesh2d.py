@@ -136,6 +136,7 @@ def test_improvement_keeps_the_input_vertices_and_never_adds_triangles():
     assert_valid(improved)
     assert not built.stats["improved"] and improved.stats["improved"]
     assert improved.stats["constructed_triangles"] == len(built.triangles)
+    assert improved.stats["improve_target"] == 20  # the default refinement angle (the comb's bound is below)
     assert len(improved.triangles) <= len(built.triangles)
     assert improved.min_angle >= min(20.0, built.min_angle)
     # Boundary Steiner points exactly on a segment may go: the boundary keeps its length and
