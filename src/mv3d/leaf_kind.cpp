@@ -2,6 +2,9 @@
 #include "mv3d/leaf_kind.hpp"
 
 #include <algorithm>
+#include <utility>
+
+#include "plc/edge_topology.hpp"
 
 namespace pqmesh::mv3d {
 
@@ -42,22 +45,9 @@ std::string faces_text(const Domain3& domain, const LeafFaces& faces) {
 }
 
 LeafClassifier::LeafClassifier(const Domain3& domain) : domain_(domain), facet_pair_edges_(domain) {
-  const std::size_t nv = domain.plc.vertices.size();
-  vertex_edges_.resize(nv);
-  vertex_facets_.resize(nv);
-  for (std::size_t e = 0; e < domain.edges.size(); ++e) {
-    const DomainEdge& de = domain.edges[e];
-    vertex_edges_[static_cast<std::size_t>(de.a)].push_back(static_cast<int>(e));
-    vertex_edges_[static_cast<std::size_t>(de.b)].push_back(static_cast<int>(e));
-  }
-  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
-    for (const auto& loop : domain.plc.facets[f].loops)
-      for (const int v : loop) vertex_facets_[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
-  for (auto& list : vertex_facets_) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
-  // vertex_edges_ is sorted: edges are visited in increasing id.
+  pqmesh::detail::VertexIncidence incidence = pqmesh::detail::vertex_incidence(domain);
+  vertex_edges_ = std::move(incidence.edges);
+  vertex_facets_ = std::move(incidence.facets);
 }
 
 bool LeafClassifier::is_superface_set(int v, const LeafFaces& faces) const {

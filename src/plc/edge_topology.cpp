@@ -139,4 +139,18 @@ EdgeTopology build_edge_topology(const Plc3& plc) {
   return topo;
 }
 
+VertexIncidence vertex_incidence(const Domain3& domain) {
+  const std::size_t nv = domain.plc.vertices.size();
+  VertexIncidence in{std::vector<std::vector<int>>(nv), std::vector<std::vector<int>>(nv)};
+  for (std::size_t e = 0; e < domain.edges.size(); ++e) {  // increasing ids: each list comes sorted
+    in.edges[static_cast<std::size_t>(domain.edges[e].a)].push_back(static_cast<int>(e));
+    in.edges[static_cast<std::size_t>(domain.edges[e].b)].push_back(static_cast<int>(e));
+  }
+  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
+    for (const auto& loop : domain.plc.facets[f].loops)
+      for (const int v : loop) in.facets[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
+  for (auto& list : in.facets) list.erase(std::unique(list.begin(), list.end()), list.end());  // f increasing
+  return in;
+}
+
 }  // namespace pqmesh::detail

@@ -21,4 +21,12 @@ EdgeTopology build_edge_topology(const Plc3& plc);
 // Index of edge (a, b) (either order) in the sorted list, or -1.
 int find_edge(const std::vector<DomainEdge>& edges, int a, int b);
 
+// Per PLC vertex: the ids of the domain edges at it and of the facets whose
+// loops hold it, each list sorted and without repeats. Cost O(edges + loop
+// vertices), plus the sorts.
+struct VertexIncidence {
+  std::vector<std::vector<int>> edges, facets;
+};
+VertexIncidence vertex_incidence(const Domain3& domain);
+
 }  // namespace pqmesh::detail

@@ -1,7 +1,9 @@
 #include "tet3d/squares/square_cases.hpp"
 
 #include <algorithm>
+#include <utility>
 
+#include "plc/edge_topology.hpp"
 #include "pqmesh/errors.hpp"
 #include "tet3d/squares/square_meets.hpp"
 
@@ -25,23 +27,13 @@ SquareDispatcher::SquareDispatcher(const OctTree& tree, const CornerSet& corners
   facet_tris_.resize(domain.plc.facets.size());
   for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t)
     facet_tris_[static_cast<std::size_t>(domain.facet_triangle_owner[t])].push_back(static_cast<int>(t));
-  const std::size_t nv = domain.plc.vertices.size();
-  vertex_edges_.resize(nv);
-  vertex_facets_.resize(nv);
+  pqmesh::detail::VertexIncidence incidence = pqmesh::detail::vertex_incidence(domain);
+  vertex_edges_ = std::move(incidence.edges);
+  vertex_facets_ = std::move(incidence.facets);
   for (std::size_t e = 0; e < domain.edges.size(); ++e) {
     const DomainEdge& de = domain.edges[e];
-    vertex_edges_[static_cast<std::size_t>(de.a)].push_back(static_cast<int>(e));
-    vertex_edges_[static_cast<std::size_t>(de.b)].push_back(static_cast<int>(e));
     const int f = std::min(de.facets[0], de.facets[1]), g = std::max(de.facets[0], de.facets[1]);
     pair_edges_[{f, g}].push_back(static_cast<int>(e));
-  }
-  for (std::size_t f = 0; f < domain.plc.facets.size(); ++f)
-    for (const auto& loop : domain.plc.facets[f].loops)
-      for (const int v : loop) vertex_facets_[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
-  for (auto& list : vertex_edges_) std::sort(list.begin(), list.end());
-  for (auto& list : vertex_facets_) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
   }
   check_collinear_edges();
 }
