@@ -143,16 +143,22 @@ TEST(NoSteinerCandidates, Random200gonDeterministic) {
               a.stats.upper_bound / kDeg);
 }
 
+// The corpus input `name` with --min-angle `degrees` (the target reported and
+// the only refined candidate), checked.
+NoSteinerResult run_with_target(const char* name, double degrees) {
+  NoSteinerOptions o;
+  o.min_angle_target = degrees;
+  o.refine_targets = {degrees};
+  test::RunStats st;
+  return test::run_and_check(test::corpus_domain(name), name, st, o);
+}
+
 // A target above the upper bound min(60, C g(P)) cannot be reached by any
 // triangulation without boundary Steiner points (Theorem 21 with the constant
 // of docs/algorithm/nosteiner2d.md "The constant"): on the 1-degree spike the
 // bound is below 10 degrees, so target 10 is reported as not reached.
 TEST(NoSteinerCandidates, TargetAboveTheBoundIsNotReached) {
-  NoSteinerOptions o;
-  o.min_angle_target = 10;
-  o.refine_targets = {10};
-  test::RunStats st;
-  const NoSteinerResult r = test::run_and_check(test::corpus_domain("spike_1deg"), "spike_1deg", st, o);
+  const NoSteinerResult r = run_with_target("spike_1deg", 10);
   EXPECT_LT(r.stats.upper_bound, 10 * kDeg);
   EXPECT_EQ(r.stats.target, 10);
   EXPECT_FALSE(r.stats.target_reached);
@@ -163,11 +169,7 @@ TEST(NoSteinerCandidates, TargetAboveTheBoundIsNotReached) {
 // square's CDT (45 degrees) already meets 30, and the output is never below
 // the CDT.
 TEST(NoSteinerCandidates, TargetBelowTheCdtIsReached) {
-  NoSteinerOptions o;
-  o.min_angle_target = 30;
-  o.refine_targets = {30};
-  test::RunStats st;
-  const NoSteinerResult r = test::run_and_check(test::corpus_domain("square"), "square", st, o);
+  const NoSteinerResult r = run_with_target("square", 30);
   EXPECT_TRUE(r.stats.target_reached);
   EXPECT_GE(r.stats.min_angle, 30 * kDeg);
 }
