@@ -106,6 +106,7 @@ int run_mesh_no_steiner(const std::vector<std::string>& argv) {
             << (options.thesis_fans ? "; Q to R connected by the thesis's fans" : "") << '\n'
             << "bound g    g(P) = " << fmt4_degrees(s.g) << " deg; any Steiner-free-boundary triangulation has min angle <= "
             << "min(60, " << fmt4(s.constant) << " * g, alpha = " << fmt4_degrees(s.alpha)
+            << ", segment = " << fmt4_degrees(s.segment_bound) << ", fan = " << fmt4_degrees(s.fan_bound)
             << ") = " << fmt4_degrees(s.upper_bound) << " deg\n"
             << "angles     min " << fmt4_degrees(s.min_angle) << " deg; achieved / upper bound = "
             << fmt4(s.min_angle / s.upper_bound) << " (upper bound " << fmt4_degrees(s.upper_bound)

@@ -113,10 +113,22 @@ struct NoSteinerStats {
   double g = 0;                    // radians
   double constant = kSteinerFreeBoundConstant;
   double alpha = 0;                // the smallest interior angle of P at an input vertex, radians
-  // min(pi/3, constant * g, alpha): no triangulation without boundary Steiner
-  // points does better (alpha: every input vertex stays a vertex, and the
-  // angles at V of the triangles in its corner sum to alpha_V;
-  // docs/algorithm/nosteiner2d.md "Refined candidates").
+  // The segment bound: the smallest, over the input segments ab, of the
+  // largest base angle of an isosceles triangle on ab whose interior meets no
+  // point of dP (capped at pi/3), radians; the triangle on ab in every
+  // triangulation without boundary Steiner points has min angle <= it
+  // (docs/algorithm/nosteiner2d.md "The segment bound").
+  double segment_bound = 0;
+  // The fan bound: the smallest, over the input vertices V, of the largest
+  // min angle a fan of triangles filling V's corner can have when its end
+  // spokes are V's two sides (radians; docs/algorithm/nosteiner2d.md "The fan
+  // bound"); it is <= alpha and <= pi/3.
+  double fan_bound = 0;
+  // min(pi/3, constant * g, alpha, segment_bound, fan_bound): no triangulation without
+  // boundary Steiner points does better (alpha: every input vertex stays a
+  // vertex, and the angles at V of the triangles in its corner sum to alpha_V;
+  // docs/algorithm/nosteiner2d.md "Refined candidates", "The segment bound",
+  // "The fan bound").
   double upper_bound = 0;
   double min_angle = 0;            // achieved, radians (of the output)
   double pipeline_min_angle = 0;   // of the Full / QOnly / Cdt mesh before keep_better_cdt (after quality_pass)

@@ -23,6 +23,8 @@
 #include "nosteiner2d/match_qr.hpp"
 #include "improve2d/quality_pass.hpp"
 #include "nosteiner2d/refined_candidate.hpp"
+#include "nosteiner2d/fan_bound.hpp"
+#include "nosteiner2d/segment_bound.hpp"
 #include "improve2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
 #include "nosteiner2d/stages.hpp"
@@ -95,13 +97,15 @@ bool passes(const TriMesh2& mesh, const Domain2& domain, std::string& why) {
 }
 
 // Records the thesis's Steiner-free bound g, the smallest input angle, the
-// upper bound they give, and the time.
+// segment and fan bounds, the upper bound they give, and the time.
 void record_bound(const Domain2& domain, NoSteinerStats& st) {
   const auto t = Clock::now();
   const SteinerFreeBound bound = steiner_free_bound(domain);  // the thesis's definition, reported
   st.g = bound.g;
   st.alpha = bound.vertex_term;
-  st.upper_bound = std::min(bound.upper_bound(), bound.vertex_term);  // nosteiner.hpp NoSteinerStats::upper_bound
+  st.segment_bound = detail::segment_bound(domain).angle;
+  st.fan_bound = detail::vertex_fan_bound(domain).angle;
+  st.upper_bound = std::min({bound.upper_bound(), bound.vertex_term, st.segment_bound, st.fan_bound});  // NoSteinerStats::upper_bound
   st.seconds_bound = since(t);
 }
 

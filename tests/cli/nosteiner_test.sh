@@ -10,7 +10,7 @@ for f in "$data"/2d/*.poly; do
   b=$(basename "$f" .poly)
   expect 0 "mesh --no-boundary-steiner $b" -- "$pqmesh" mesh "$f" -o "$work/$b.vtu" --no-boundary-steiner
   cp "$work/out" "$work/$b.summary"
-  contains "$work/$b.summary" "^bound g +g\(P\) = [0-9.e+-]+ deg; .* <= min\(60, 5\.319 \* g, alpha = [0-9.e+-]+\) = " "g line $b"
+  contains "$work/$b.summary" "^bound g +g\(P\) = [0-9.e+-]+ deg; .* <= min\(60, 5\.319 \* g, alpha = [0-9.e+-]+, segment = [0-9.e+-]+, fan = [0-9.e+-]+\) = " "g line $b"
   contains "$work/$b.summary" "^angles +min [0-9.e+-]+ deg; achieved / upper bound = [0-9.e+-]+ \(upper bound [0-9.e+-]+ deg\); achieved / g = " "angles line $b"
   contains "$work/$b.summary" "^refined +best refined candidate .* min [0-9.e+-]+ deg" "refined line $b"
   contains "$work/$b.summary" "^cdt +constrained Delaunay .* min [0-9.e+-]+ deg" "cdt line $b"

@@ -25,7 +25,8 @@ struct RunStats {
   double min_ratio_full = 1e300;          // over Full-path outputs only
   double min_vs_cdt = 1e300;              // achieved / CDT min angle
   std::vector<double> ratios;
-  std::vector<double> bound_ratios;       // output min angle / upper bound min(60, C g)
+  std::vector<double> bound_ratios;       // output min angle / NoSteinerStats::upper_bound
+  std::string worst_bound;                // the domain realising the smallest of them
   int refined_outputs = 0;                // outputs that are a refined candidate
   std::string worst;                      // the domain realising min_ratio
   double output_min_ratio = 1e300;        // achieved / g of the output (after keep_better_cdt)
@@ -115,6 +116,8 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   st.min_vs_cdt = std::min(st.min_vs_cdt, s.pipeline_min_angle / s.cdt_min_angle);
   st.output_min_ratio = std::min(st.output_min_ratio, s.ratio);
   st.ratios.push_back(pipeline_ratio);
+  if (st.bound_ratios.empty() || s.min_angle / s.upper_bound < *std::min_element(st.bound_ratios.begin(), st.bound_ratios.end()))
+    st.worst_bound = what;
   st.bound_ratios.push_back(s.min_angle / s.upper_bound);
   if (s.path == NoSteinerPath::Refined) ++st.refined_outputs;
   return res;
@@ -128,7 +131,8 @@ inline void print(const RunStats& st, const char* what) {
   std::vector<double> b = st.bound_ratios;
   std::sort(b.begin(), b.end());
   if (!b.empty())
-    std::cout << "[no-boundary-Steiner] " << what << ": output / upper bound min " << b.front() << ", median "
+    std::cout << "[no-boundary-Steiner] " << what << ": output / upper bound min " << b.front() << " ("
+              << st.worst_bound << "), median "
               << b[b.size() / 2] << ", max " << b.back() << "; refined candidate written on " << st.refined_outputs
               << " of " << b.size() << "\n";
   std::cout << "[no-boundary-Steiner] " << what << ": construction (before the quality pass) achieved/g min "

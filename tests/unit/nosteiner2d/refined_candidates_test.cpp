@@ -174,7 +174,7 @@ TEST(NoSteinerCandidates, TargetBelowTheCdtIsReached) {
   EXPECT_GE(r.stats.min_angle, 30 * kDeg);
 }
 
-// The upper bound min(60, C g(P), alpha) (NoSteinerStats::upper_bound;
+// The upper bound min(60, C g(P), alpha, segment, fan) (NoSteinerStats::upper_bound;
 // docs/algorithm/nosteiner2d.md "Refined candidates") is attained when P is
 // a triangle: P itself is a triangulation without boundary Steiner points
 // with min angle alpha, and the output is never below the CDT, which is P.
@@ -191,7 +191,9 @@ TEST(NoSteinerUpperBound, AttainedByTriangles) {
     test::RunStats st;
     const NoSteinerResult r = test::run_and_check(test::polygon(t), "triangle " + std::to_string(k), st, defaults);
     EXPECT_NEAR(r.stats.min_angle, r.stats.upper_bound, 1e-12 * r.stats.upper_bound) << "triangle " << k;
-    EXPECT_EQ(r.stats.upper_bound, std::min(r.stats.alpha, std::min(std::numbers::pi / 3, r.stats.constant * r.stats.g)));
+    EXPECT_EQ(r.stats.upper_bound,
+              std::min({r.stats.alpha, std::numbers::pi / 3, r.stats.constant * r.stats.g, r.stats.segment_bound,
+                        r.stats.fan_bound}));
   }
 }
 

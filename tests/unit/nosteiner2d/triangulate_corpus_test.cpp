@@ -58,10 +58,11 @@ void run(const Domain2& d, const std::string& what, test::RunStats& st,
   }
   EXPECT_EQ(s.pipeline_path, NoSteinerPath::Full) << what << ": " << s.fallback_reason;
   constexpr double deg = 180 / std::numbers::pi;
-  std::printf("  %-26s g %8.4f, construction %9.5f, +pass %9.5f (%s, ratio %.3g; %lld flips, %lld removals, %lld moves, %lld cavities%s), cdt %8.4f, output %s %lld tri%s%s\n", what.c_str(),
+  std::printf("  %-26s g %8.4f, construction %9.5f, +pass %9.5f (%s, ratio %.3g; %lld flips, %lld removals, %lld moves, %lld cavities%s), cdt %8.4f, output %s %.4f / bound %.4f = %.3f, %lld tri%s%s\n", what.c_str(),
               s.g * deg, s.construction_min_angle * deg, s.pipeline_min_angle * deg, to_string(s.pipeline_path), s.pipeline_min_angle / s.g,
               static_cast<long long>(s.pass_flips), static_cast<long long>(s.pass_removals), static_cast<long long>(s.pass_moves), static_cast<long long>(s.pass_cavities), s.pass_stuck ? "" : ", step bound",
-              s.cdt_min_angle * deg, to_string(s.path), static_cast<long long>(s.triangles),
+              s.cdt_min_angle * deg, to_string(s.path), s.min_angle * deg, s.upper_bound * deg, s.min_angle / s.upper_bound,
+              static_cast<long long>(s.triangles),
               s.pipeline_path == NoSteinerPath::Full ? "" : "; ",
               s.pipeline_path == NoSteinerPath::Full ? "" : s.fallback_reason.substr(0, 90).c_str());
 }
