@@ -55,6 +55,7 @@ bool Collapser::try_collapse(int u, int v) {
   v_ = v;
   if (!class_allows()) return refuse(Refusal::Class);
   if (!split_u()) return refuse(Refusal::NoEdge);
+  if (!new_edges_within_uniform_size()) return refuse(Refusal::Size);
   if (!moved_positive()) return refuse(Refusal::Orientation);
   if (!one_region()) return refuse(Refusal::Region);
   split_v();
@@ -242,6 +243,20 @@ bool Collapser::within_size() const {
     const auto k = moved(t);
     if (!size_.allows({mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])})) return false;
   }
+  return true;
+}
+
+// Rule 5 early, for a uniform bound (size_bound.hpp): no new edge vx (x a
+// vertex of a moving tetrahedron) longer than the bound. Cheaper than the
+// orientation and link tests it precedes; refuses only collapses that
+// within_size() refuses too, so the decisions do not change.
+bool Collapser::new_edges_within_uniform_size() const {
+  if (!size_.bounded() || !size_.uniform()) return true;
+  const double bound = size_.longest_edge_bound();
+  const Vec3 pv = mesh_.point(v_);
+  for (const int t : moving_)
+    for (const int x : mesh_.tet(t))
+      if (x != u_ && !(norm(pv - mesh_.point(x)) <= bound)) return false;
   return true;
 }
 

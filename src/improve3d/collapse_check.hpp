@@ -71,6 +71,7 @@ class Collapser {
   bool edge_vertex_moves_along_edge() const;
   bool no_duplicate_face() const;
   bool within_size() const;
+  bool new_edges_within_uniform_size() const;
   bool is_new_neighbour(int x) const;
   void list_new_neighbours();
   bool moved_positive() const;

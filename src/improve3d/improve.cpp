@@ -11,6 +11,7 @@
 
 #include "improve3d/collapse_check.hpp"
 #include "improve3d/collapse_mesh.hpp"
+#include "improve3d/collapse_retry.hpp"
 #include "improve3d/edge_queue.hpp"
 #include "improve3d/flips.hpp"
 #include "improve3d/size_bound.hpp"
@@ -121,6 +122,17 @@ class Coarsener {
       : mesh_(mesh), classes_(classes), collapser_(collapser),
         changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0) {}
 
+  // Records that the stars of `vertices` changed by something other than a
+  // collapse (smoothing, flips), so their refused edges are tried again, and
+  // queues `edges` (made by flips: never tried) for the next pass.
+  void stars_changed(const std::vector<int>& vertices, const std::vector<std::pair<int, int>>& edges) {
+    ++clock_;
+    if (changed_at_.size() < static_cast<std::size_t>(mesh_.vertex_count()))
+      changed_at_.resize(static_cast<std::size_t>(mesh_.vertex_count()), 0);
+    for (const int x : vertices) changed_at_[static_cast<std::size_t>(x)] = clock_;
+    for (const auto& [a, b] : edges) fresh_.push_back(entry(a, b));
+  }
+
   PassResult pass() {
     queue_.start(first_pass_ ? all_edges() : changed_edges());
     first_pass_ = false;
@@ -165,10 +177,14 @@ class Coarsener {
     return edges;
   }
 
-  // The refused edges with both ends alive and an end changed since the
-  // refusal; the others (both ends alive) stay refused.
+  // The edges queued by stars_changed and the refused edges with both ends
+  // alive and an end changed since the refusal; the other refused edges (both
+  // ends alive) stay refused.
   std::vector<EdgeEntry> changed_edges() {
     std::vector<EdgeEntry> edges;
+    for (const EdgeEntry& e : fresh_)
+      if (mesh_.vertex_alive(e.a) && mesh_.vertex_alive(e.b)) edges.push_back(e);
+    fresh_.clear();
     std::size_t kept = 0;
     for (const Refused& r : refused_) {
       if (!mesh_.vertex_alive(r.a) || !mesh_.vertex_alive(r.b)) continue;
@@ -197,17 +213,18 @@ class Coarsener {
   Collapser& collapser_;
   std::vector<std::int64_t> changed_at_;  // clock_ when the vertex's star last changed
   std::vector<Refused> refused_;
+  std::vector<EdgeEntry> fresh_;  // edges made otherwise than by a collapse, for the next pass
   std::int64_t clock_ = 0;  // edges tried so far
   bool first_pass_ = true;
   EdgeQueue queue_;
 };
 
-// The collapse passes of one round (a fresh Coarsener: every edge is tried
-// again, the stars having changed by smoothing and flips). Returns the collapses.
-std::int64_t collapse_passes(CollapseMesh& work, const detail::VertexClasses& classes, Collapser& collapser,
-                             ImproveStats& stats) {
+// The collapse passes of one round. The coarsener lives across the rounds: a
+// round after the first tries the edges refused before with an end whose star
+// smoothing or flips changed since, and the edges flips made
+// (Coarsener::stars_changed, collapse_retry.hpp). Returns the collapses.
+std::int64_t collapse_passes(Coarsener& coarsener, Collapser& collapser, ImproveStats& stats) {
   collapser.forget();
-  Coarsener coarsener(work, classes, collapser);
   std::int64_t collapses = 0;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const PassResult result = coarsener.pass();
@@ -264,11 +281,20 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   stats.vertices_before = work.live_vertices();
   stats.worst_aspect_before = work.worst_aspect();
   stats.min_dihedral_before = work.min_dihedral();  // measured by the constructor
+  Coarsener coarsener(work, classes, collapser);
+  detail::StarChanges changes;
+  std::vector<int> changed;
+  std::vector<std::pair<int, int>> new_edges;
   for (int round = 0; round < std::max(1, options.rounds); ++round) {
-    const std::int64_t collapses = collapse_passes(work, classes, collapser, stats);
+    if (round > 0) {
+      changes.since(work, changed, new_edges);
+      coarsener.stars_changed(changed, new_edges);
+    }
+    const std::int64_t collapses = collapse_passes(coarsener, collapser, stats);
     work.measure_dihedrals(memo);  // collapses do not keep them; smoothing and flips need them
     if (round == 0) stats.min_dihedral_collapsed = work.min_dihedral();
     if (round > 0 && collapses == 0) break;
+    changes.take(work);
     if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, stats) == 0) break;
   }
   stats.min_dihedral_after = work.min_dihedral();

@@ -23,6 +23,12 @@ class SizeBound {
 
   bool bounded() const { return max_size_ < std::numeric_limits<double>::infinity() || !points_.empty(); }
 
+  // With max_size only (no size points) the bound is one length: allows(t)
+  // is false whenever some edge of t is longer than longest_edge_bound()
+  // (the same floating-point comparison), so a caller may refuse early on one edge.
+  bool uniform() const { return points_.empty(); }
+  double longest_edge_bound() const { return std::sqrt(3.0) * max_size_; }
+
   bool allows(const std::array<Vec3, 4>& t) const {
     const Vec3 g = 0.25 * (t[0] + t[1] + t[2] + t[3]);
     double h = max_size_;
