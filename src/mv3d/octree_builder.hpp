@@ -24,8 +24,9 @@
 //                 block still grades towards small boxes);
 //                 With extended_margin 1: before centering, the leaves of
 //                 vertices whose united blocks would overlap are split
-//                 (separate_united_boxes, united_overlap.hpp); part 1 also
-//                 splits every larger leaf reaching into the block, and the
+//                 (separate_united_boxes, united_overlap.hpp); part 1
+//                 splits only the larger leaves reaching into the block
+//                 (not every larger balance-adjacent box), and the
 //                 owners are every leaf meeting the block; after the last
 //                 phase, leaves that a vertex job would mesh besides their
 //                 own are listed (united_clashes);
