@@ -35,7 +35,8 @@ std::string refined_line(const NoSteinerStats& s) {
   if (s.refined_target == 0) return "no refined candidate (--pipeline, --thesis-fans, or none passed the check)";
   return "best refined candidate (CDT refined towards " + fmt4(s.refined_target) +
          " deg, interior points only, + quality pass): min " + fmt4_degrees(s.refined_min_angle) + " deg, " +
-         std::to_string(s.refined_inserted) + " points inserted, target " +
+         std::to_string(s.refined_inserted) + " points inserted (" + std::to_string(s.refined_seeds) +
+         " seeds where the upper bound places the best triangles), target " +
          (s.refined_target_reached ? "met by the refinement" : "not met by the refinement");
 }
 

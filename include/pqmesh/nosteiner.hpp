@@ -144,6 +144,7 @@ struct NoSteinerStats {
   double refined_min_angle = 0;    // radians; 0 when none ran
   double refined_target = 0;       // its target, degrees
   std::int64_t refined_inserted = 0;  // its interior points (before the pass)
+  std::int64_t refined_seeds = 0;     // of which seed points (0: the plain candidate; docs "Refined candidates")
   bool refined_target_reached = false;  // its refinement met the target (sharp input corners excused), before the pass
   // NoSteinerOptions::min_angle_target (degrees) and whether the output's min angle reaches it.
   double target = 0;

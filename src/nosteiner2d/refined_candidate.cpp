@@ -13,9 +13,11 @@ namespace pqmesh::detail {
 
 std::size_t refined_point_cap(const Domain2& domain) { return 32 * domain.pslg.vertices.size() + 4096; }
 
-RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees, std::size_t max_new_points) {
+RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees, std::size_t max_new_points,
+                                   const std::vector<Vec2>& seeds) {
   cdt2d::CdtInput in;
   in.points = domain.pslg.vertices;
+  in.points.insert(in.points.end(), seeds.begin(), seeds.end());
   for (const auto& loop : domain.loops)
     for (std::size_t k = 0; k < loop.size(); ++k) in.constraints.push_back({loop[k], loop[(k + 1) % loop.size()]});
   cdt2d::RefineOptions options;
@@ -25,7 +27,8 @@ RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees,
   cdt2d::RefineResult r = cdt2d::refine_constrained_delaunay(std::move(in), options);
   RefinedCandidate out;
   out.target_degrees = target_degrees;
-  out.inserted = r.inserted;
+  out.inserted = seeds.size() + r.inserted;
+  out.seeds = seeds.size();
   out.target_reached = r.target_reached;
   out.cap_reached = r.cap_reached;
   out.given_up_outside = r.given_up_outside;

@@ -22,7 +22,8 @@ struct RefinedCandidate {
   // kRegionRefined; no edges.
   TriMesh2 mesh;
   double target_degrees = 0;
-  std::size_t inserted = 0;
+  std::size_t inserted = 0;     // interior points: the seeds, then the refinement's points
+  std::size_t seeds = 0;        // of which seeds (seed_points.hpp), right after the input vertices
   bool target_reached = false;  // every triangle not excused (a sharp input corner) meets the target
   bool cap_reached = false;     // stopped by the point cap
   std::size_t given_up_outside = 0, given_up_near = 0, given_up_flat = 0, apex_points = 0;  // cdt2d::RefineResult's counts
@@ -34,11 +35,13 @@ struct RefinedCandidate {
 // below it (docs/MEASUREMENTS.md "No boundary Steiner points").
 std::size_t refined_point_cap(const Domain2& domain);
 
-// Refines the CDT of `domain` towards `target_degrees` (> 0) with at most
-// `max_new_points` (> 0) interior points. Cost: the CDT (O(n log n)) plus
-// the refinement loop, linear in the points inserted apart from the walks
-// and cavities (local on graded meshes).
-RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees, std::size_t max_new_points);
+// Refines the CDT of `domain` and the points `seeds` (distinct, strictly
+// inside P; seed_points.hpp) towards `target_degrees` (> 0) with at most
+// `max_new_points` (> 0) further interior points. Cost: the CDT
+// (O(n log n)) plus the refinement loop, linear in the points inserted apart
+// from the walks and cavities (local on graded meshes).
+RefinedCandidate refined_candidate(const Domain2& domain, double target_degrees, std::size_t max_new_points,
+                                   const std::vector<Vec2>& seeds = {});
 
 // The quality-pass settings tried on each refined candidate, in this order
 // (each on a copy of the candidate; the caller keeps the first maximum):

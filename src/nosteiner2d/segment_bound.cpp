@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "nosteiner2d/face_grid.hpp"
@@ -21,23 +22,25 @@ double segment_apex_angle(Vec2 a, Vec2 b, Vec2 q) {
 namespace {
 
 // The crossing of side cd with the perpendicular bisector of ab, when it is
-// strictly inside cd and strictly left of a -> b. With both ends of cd left
-// of ab (exact) the whole side is, so the rounded crossing only perturbs the
-// angle; otherwise the crossing is used only when its computed height above
-// ab is far above the rounding of the coordinates (2^-40 of their
-// magnitude), so that the true crossing is left of ab too.
-bool bisector_crossing(Vec2 a, Vec2 b, Vec2 c, Vec2 d, bool both_left, Vec2& q) {
+// strictly inside cd and well left of a -> b, with the angle t there made
+// safe against the rounding of the construction: the computed q is within
+// 2^-50 s of a true point q' of cd (s the largest coordinate magnitude), so
+// with q's height h above ab at least 2^-44 s, q' is left of ab too and
+// t(q') <= t(q) + 2^-48 s / h (a point moved by d changes the angles at a and
+// b by at most d / h). Returns that safe value, or +infinity.
+double bisector_crossing(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Vec2& q) {
+  const double none = std::numeric_limits<double>::infinity();
   const Vec2 u = b - a, mid = {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
   const double den = dot(d - c, u);
-  if (den == 0) return false;
+  if (den == 0) return none;
   const double t = dot(mid - c, u) / den;
-  if (!(t > 0 && t < 1)) return false;
+  if (!(t > 0 && t < 1)) return none;
   q = c + t * (d - c);
-  if (orient2d(a, b, q) != Sign::Positive) return false;
-  if (both_left) return true;
   const double scale = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x),
                                  std::abs(c.y), std::abs(d.x), std::abs(d.y)});
-  return cross(u, q - a) / norm(u) > std::ldexp(scale, -40);
+  const double h = cross(u, q - a) / norm(u);
+  if (!(h > std::ldexp(scale, -44))) return none;
+  return segment_apex_angle(a, b, q) + std::ldexp(scale, -48) / h;
 }
 
 }  // namespace
@@ -61,21 +64,24 @@ SegmentBound segment_bound(const Domain2& domain) {
       grid.query(centre, 0.5 * norm(u), side_ids, vertex_ids);
       double best = cap;
       Vec2 witness{};
-      auto consider = [&](Vec2 q) {
-        const double t = segment_apex_angle(a, b, q);
+      auto consider = [&](double t, Vec2 q) {
         if (t < best) best = t, witness = q;
       };
       for (const int v : vertex_ids) {
         const Vec2 q = P[static_cast<std::size_t>(grid.vertices()[static_cast<std::size_t>(v)])];
-        if (orient2d(a, b, q) == Sign::Positive) consider(q);
+        if (orient2d(a, b, q) == Sign::Positive) consider(segment_apex_angle(a, b, q), q);
       }
+      const int ia = loop[k], ib = loop[(k + 1) % n];
       for (const int s : side_ids) {
         const auto& cd = grid.sides()[static_cast<std::size_t>(s)];
+        // A side at a (or b) gives angle qab = alpha_a (or alpha_b) all along: the alpha term.
+        if (cd[0] == ia || cd[0] == ib || cd[1] == ia || cd[1] == ib) continue;
         const Vec2 c = P[static_cast<std::size_t>(cd[0])], d = P[static_cast<std::size_t>(cd[1])];
-        const bool c_left = orient2d(a, b, c) == Sign::Positive, d_left = orient2d(a, b, d) == Sign::Positive;
-        if (!c_left && !d_left) continue;  // a side reaching H crosses line ab outside [a, b]: one end is in H
+        // Both ends right of or on line ab: the whole side is (no point in H).
+        if (orient2d(a, b, c) != Sign::Positive && orient2d(a, b, d) != Sign::Positive) continue;
         Vec2 q;
-        if (bisector_crossing(a, b, c, d, c_left && d_left, q)) consider(q);
+        const double t = bisector_crossing(a, b, c, d, q);
+        consider(t, q);
       }
       out.side_angle.back()[static_cast<std::size_t>(k)] = best;
       if (best < out.angle) out.angle = best, out.loop = l, out.side = k, out.witness = witness;

@@ -22,7 +22,9 @@
 // end of cd; contacts at a or b along an adjacent side give that corner's
 // angle, covered by the alpha term of NoSteinerStats::upper_bound).
 // Decisions on which side of ab a vertex lies are exact (orient2d); angles
-// are floating point (atan2), like every angle of the module.
+// are floating point (atan2), like every angle of the module; a crossing is
+// a constructed point, so its angle is raised by a bound on the effect of
+// its rounding (segment_bound.cpp) and the value stays an upper bound.
 //
 // Cost: one bucket-grid query per side over the bounding square of the
 // equilateral triangle on it (only points inside it can give t < pi/3);

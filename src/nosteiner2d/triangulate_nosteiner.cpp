@@ -24,6 +24,7 @@
 #include "improve2d/quality_pass.hpp"
 #include "nosteiner2d/refined_candidate.hpp"
 #include "nosteiner2d/fan_bound.hpp"
+#include "nosteiner2d/seed_points.hpp"
 #include "nosteiner2d/segment_bound.hpp"
 #include "improve2d/triangle_angles.hpp"
 #include "pqmesh/check.hpp"
@@ -278,12 +279,47 @@ std::string degrees_text(double degrees) {
   return buffer;
 }
 
-// The refined candidates (options.refine_targets, in order; refined_candidate.hpp),
-// each + the quality pass (options.quality_pass: every setting of
-// detail::refined_pass_variants on a copy, in order) and, with
-// options.verify, dropped when it fails the checker. The best one (first
-// maximum) is recorded in st.refined_*; it replaces `mesh` (min angle
-// `best`, updated; st.path Refined) when its min angle is strictly larger.
+// One refined candidate c with the quality pass (options.quality_pass: every
+// setting of detail::refined_pass_variants on a copy, in order) and, with
+// options.verify, dropped when it fails the checker. The best so far (first
+// maximum; `any` once one is recorded) is in st.refined_*; a result replaces
+// `mesh` (min angle `best`, updated; st.path Refined) when its min angle is
+// strictly larger.
+void try_refined_candidate(const Domain2& domain, const NoSteinerOptions& options, const detail::RefinedCandidate& c,
+                           TriMesh2& mesh, double& best, bool& any, NoSteinerStats& st) {
+  const double target = c.target_degrees;
+  std::vector<detail::QualityPassOptions> variants = detail::refined_pass_variants(target);
+  if (!options.quality_pass) variants.resize(1);  // the candidate as refined (no pass below)
+  for (const detail::QualityPassOptions& variant : variants) {
+    TriMesh2 m = c.mesh;
+    std::string why;
+    if (options.quality_pass) checked_quality_pass(domain, options, m, st, why, variant);
+    if (options.verify && !passes(m, domain, why)) continue;
+    const double angle = min_triangle_angle(m);
+    if (!any || angle > st.refined_min_angle) {
+      any = true;
+      st.refined_min_angle = angle;
+      st.refined_target = target;
+      st.refined_inserted = std::int64_t(c.inserted);
+      st.refined_seeds = std::int64_t(c.seeds);
+      st.refined_target_reached = c.target_reached;
+    }
+    if (angle > best) {
+      st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") +
+                           (c.seeds > 0 ? "the seeded refined candidate (target " : "the refined candidate (target ") +
+                           degrees_text(target) +
+                           " deg) has the larger min angle (" + std::to_string(angle) + " rad against " +
+                           std::to_string(best) + " rad)";
+      st.path = NoSteinerPath::Refined;
+      best = angle;
+      mesh = std::move(m);
+    }
+  }
+}
+
+// The refined candidates (options.refine_targets, in order; refined_candidate.hpp):
+// per target the plain one, then, when seed_points gives any, the seeded
+// one, each through try_refined_candidate.
 void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, double& best,
                             NoSteinerStats& st) {
   const auto t = Clock::now();
@@ -291,32 +327,10 @@ void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& optio
       options.refine_max_points != 0 ? options.refine_max_points : detail::refined_point_cap(domain);
   bool any = false;
   for (const double target : options.refine_targets) {
-    const detail::RefinedCandidate c = detail::refined_candidate(domain, target, cap);
-    std::vector<detail::QualityPassOptions> variants = detail::refined_pass_variants(target);
-    if (!options.quality_pass) variants.resize(1);  // the candidate as refined (no pass below)
-    for (const detail::QualityPassOptions& variant : variants) {
-      TriMesh2 m = c.mesh;
-      std::string why;
-      if (options.quality_pass) checked_quality_pass(domain, options, m, st, why, variant);
-      if (options.verify && !passes(m, domain, why)) continue;
-      const double angle = min_triangle_angle(m);
-      if (!any || angle > st.refined_min_angle) {
-        any = true;
-        st.refined_min_angle = angle;
-        st.refined_target = target;
-        st.refined_inserted = std::int64_t(c.inserted);
-        st.refined_target_reached = c.target_reached;
-      }
-      if (angle > best) {
-        st.fallback_reason = (st.fallback_reason.empty() ? "" : st.fallback_reason + "; ") +
-                             "the refined candidate (target " + degrees_text(target) +
-                             " deg) has the larger min angle (" + std::to_string(angle) + " rad against " +
-                             std::to_string(best) + " rad)";
-        st.path = NoSteinerPath::Refined;
-        best = angle;
-        mesh = std::move(m);
-      }
-    }
+    const std::vector<Vec2> seeds = detail::seed_points(domain, target);
+    for (int seeded = 0; seeded < (seeds.empty() ? 1 : 2); ++seeded)
+      try_refined_candidate(domain, options, detail::refined_candidate(domain, target, cap, seeded ? seeds : std::vector<Vec2>{}),
+                            mesh, best, any, st);
   }
   st.seconds_refine = since(t);
 }

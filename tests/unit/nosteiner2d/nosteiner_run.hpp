@@ -71,7 +71,8 @@ inline NoSteinerResult run_and_check(const Domain2& d, const std::string& what, 
   EXPECT_EQ(s.min_angle, min_triangle_angle(res.mesh));
   // Theorem 21 with the constant of docs/algorithm/nosteiner2d.md "The constant": no Steiner-free-boundary
   // triangulation beats C g(P); ours is one, so this must hold.
-  EXPECT_LE(s.min_angle, s.upper_bound * (1 + 1e-12));
+  EXPECT_LE(s.min_angle, s.upper_bound * (1 + 1e-12))
+      << "alpha " << s.alpha << ", C g " << s.constant * s.g << ", segment " << s.segment_bound << ", fan " << s.fan_bound;
   ++st.domains;
   // keep_better_cdt (default): the output is never worse than the CDT.
   if (options.keep_better_cdt) {
@@ -133,7 +134,8 @@ inline void print(const RunStats& st, const char* what) {
   if (!b.empty())
     std::cout << "[no-boundary-Steiner] " << what << ": output / upper bound min " << b.front() << " ("
               << st.worst_bound << "), median "
-              << b[b.size() / 2] << ", max " << b.back() << "; refined candidate written on " << st.refined_outputs
+              << b[b.size() / 2] << ", max " << b.back() << ", below 0.25 on "
+              << std::count_if(b.begin(), b.end(), [](double x) { return x < 0.25; }) << "; refined candidate written on " << st.refined_outputs
               << " of " << b.size() << "\n";
   std::cout << "[no-boundary-Steiner] " << what << ": construction (before the quality pass) achieved/g min "
             << st.construction_min_ratio << ", median " << (c.empty() ? 0 : c[c.size() / 2])
