@@ -30,11 +30,14 @@ using detail::EdgeEntry;
 using detail::EdgeQueue;
 using detail::VertexClass;
 
-// The run stops after a pass that collapses nothing, or fewer than
-// kMinYield of the edges it tried (late passes retry many edges near the
-// previous pass's collapses for few collapses), or after kMaxPasses. Only the
-// running time and the number of tetrahedra depend on them; every outcome is
-// a valid mesh.
+// The passes of a round stop after a pass that collapses nothing, or after
+// a pass but the round's first that collapses fewer than kMinYield of the
+// edges it tried (late passes retry many edges near the previous pass's
+// collapses for few collapses), or after kMaxPasses. A round's first pass
+// always has a second: after the first round the first pass tries only the
+// edges smoothing and flips changed, and the edges its collapses change next
+// are few and often collapse. Only the running time and the number of
+// tetrahedra depend on these; every outcome is a valid mesh.
 constexpr int kMaxPasses = 8;
 constexpr double kMinYield = 0.02;
 // Smoothing passes: at most kMaxSmoothPasses; each pass after the first tries
@@ -230,7 +233,7 @@ std::int64_t collapse_passes(Coarsener& coarsener, Collapser& collapser, Improve
     const PassResult result = coarsener.pass();
     ++stats.passes;
     collapses += result.collapses;
-    if (static_cast<double>(result.collapses) < kMinYield * static_cast<double>(result.edges) || result.collapses == 0)
+    if (result.collapses == 0 || (pass > 0 && static_cast<double>(result.collapses) < kMinYield * static_cast<double>(result.edges)))
       break;
   }
   stats.collapses += collapses;

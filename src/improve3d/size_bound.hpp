@@ -3,7 +3,8 @@
 // tet_mesh) h(x) = min(max_size, min_i sizes[i] + |x - points[i]|); a
 // tetrahedron may be made only when its longest edge is at most sqrt(3) h(g),
 // g its centroid (the diagonal of a box of side h: what the construction's
-// tetrahedra meet). A floating-point threshold: it only refuses operations,
+// tetrahedra meet, except cones from an input vertex across a united vertex
+// box, up to 2.32 h at the unit cube's corners). A floating-point threshold: it only refuses operations,
 // and every outcome is a valid mesh (docs/DESIGN_RULES.md "Exact decisions").
 #include <algorithm>
 #include <array>
