@@ -95,7 +95,8 @@ void print_octree_summary(const OctreeRun& run, const Domain3& domain, const Oct
             << "splits     size " << r.splits_size << ", vertex " << r.splits_vertex << ", centering "
             << r.splits_centering << ", edge " << r.splits_edge << ", edge-separate " << r.splits_edge_separate
             << ", facet " << r.splits_facet << ", facet-separate " << r.splits_facet_separate << ", balance "
-            << r.splits_balance << '\n'
+            << r.splits_balance << ", united " << r.splits_united << " (edge splits of leaves holding two edges "
+            << r.splits_edge_two_edges << ")\n"
             << "duplicates " << r.duplicates_created << " created\n"
             << "components " << r.components_split << " at splits, " << r.components_extended
             << " extended boxes, " << r.components_adjacency << " adjacency queries\n"
@@ -120,7 +121,7 @@ void print_octree_summary(const OctreeRun& run, const Domain3& domain, const Oct
 }  // namespace
 
 int run_octree(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--quiet", "--no-merge", "--generic-grid"},
+  const Args args(argv, {"--quiet", "--no-merge", "--generic-grid", "--light"},
                   {"-o", "--output", "--merge-angle", "--max-size", "--size-field"});
   args.expect_positional(1, 1);
   const std::string& input = args.positional()[0];
@@ -137,6 +138,7 @@ int run_octree(const std::vector<std::string>& argv) {
   }
   if (const auto field = args.option("--size-field")) options.size_field = read_size_field3(*field);
   options.generic_grid = args.flag("--generic-grid");
+  options.light = args.flag("--light");
 
   const LoadedDomain loaded = load_domain(input, read_options_from(args));
   const auto* domain = std::get_if<Domain3>(&loaded.domain);

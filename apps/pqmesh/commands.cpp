@@ -123,7 +123,7 @@ const std::vector<Command>& commands() {
        run_mesh},
       {"octree", "build the octree of thesis 4.1 for a 3D domain; write its leaves as .vtu",
        "usage: pqmesh octree INPUT -o BOXES.vtu [--max-size H] [--size-field FILE] [--generic-grid]\n"
-       "                     [--merge-angle DEG] [--no-merge] [--quiet]\n"
+       "                     [--light] [--merge-angle DEG] [--no-merge] [--quiet]\n"
        "\n"
        "Builds the Mitchell-Vavasis octree of a 3D domain (thesis 4.1: size phase, vertex phase,\n"
        "vertex centering, edge phase, edge separating splits, edge-box protection, facet phase,\n"
@@ -143,6 +143,8 @@ const std::vector<Command>& commands() {
        "                     split (docs/FORMATS.md, \"3D size fields\")\n"
        "  --generic-grid     shift every box plane off the input's coordinates (the grid 'pqmesh mesh'\n"
        "                     uses on 3D input; docs/algorithm/octree3d.md)\n"
+       "  --light            the octree 'pqmesh mesh' tries first: extended boxes of 3 times the\n"
+       "                     side, no separating splits (docs/algorithm/mesh3d.md)\n"
        "  --merge-angle DEG, --no-merge  as for 'pqmesh info'\n"
        "  --quiet            print nothing on success\n"
        "\n"

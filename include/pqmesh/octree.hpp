@@ -17,6 +17,10 @@ struct OctreeOptions3 {
   double max_size = 0;       // largest box side anywhere; 0: no limit
   TetSizeField size_field;   // empty: none
   bool generic_grid = false; // true: the generic grid of the 3D mesher; false: the aligned grid
+  // true: the octree `pqmesh mesh` tries first (extended boxes of 3 times the
+  // side, no separating splits; docs/algorithm/mesh3d.md "Light construction
+  // first"); false: the thesis's octree.
+  bool light = false;
 };
 
 // Phase numbers of OctreeLeaf::phase and protected_by (octree_phase_name).
@@ -54,6 +58,8 @@ struct OctreeReport {
   std::array<double, 3> grid_offset{};  // the generic grid's shift (0 when aligned)
   std::int64_t splits_size = 0, splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0;
   std::int64_t splits_balance = 0, splits_edge_separate = 0, splits_facet_separate = 0;
+  std::int64_t splits_united = 0;          // light: vertex leaves split so that united boxes do not overlap
+  std::int64_t splits_edge_two_edges = 0;  // of splits_edge: the leaf held two edges (of one vertex, §4.1.4)
   std::int64_t duplicates_created = 0, vertex_boxes = 0;
   std::int64_t components_split = 0, components_extended = 0, components_adjacency = 0;
   std::vector<OctreePhaseStats> phases;

@@ -592,6 +592,7 @@ void OctreeBuilder::run_phase(OctPhase which, bool (OctreeBuilder::*crowded)(std
     if (tree_.level(n) >= tree_.max_level())
       throw InternalError("mv3d octree: refinement reached the deepest representable level (phase " +
                           std::to_string(static_cast<int>(which)) + ")");
+    if (which == OctPhase::Edge && data(n).edges.size() > 1) ++stats_.splits_edge_two_edges;
     const std::int32_t before = split_and_balance(n, which);
     ++counter;
     for (std::int32_t id = before; id < tree_.size(); ++id)

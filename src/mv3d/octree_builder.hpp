@@ -133,6 +133,9 @@ struct OctreeStats {
   std::int64_t splits_vertex = 0, splits_centering = 0, splits_edge = 0, splits_facet = 0, splits_balance = 0;
   std::int64_t splits_edge_separate = 0, splits_facet_separate = 0;  // §4.1.7 steps 6 and 9
   std::int64_t splits_united = 0;  // margin 1: vertex leaves split so that united boxes do not overlap
+  // Of splits_edge: the leaf held two edges (of one P vertex outside it; the
+  // rest were crowded by faces of the extended box).
+  std::int64_t splits_edge_two_edges = 0;
   std::int64_t duplicates = 0;
   std::int64_t leaves = 0, outside_leaves = 0, vertex_boxes = 0;
   // components() calls (the dominant cost): for children and parents at a

@@ -49,6 +49,8 @@ void copy_counters(const mv3d::OctreeStats& s, OctreeReport& r) {
   r.splits_balance = s.splits_balance;
   r.splits_edge_separate = s.splits_edge_separate;
   r.splits_facet_separate = s.splits_facet_separate;
+  r.splits_united = s.splits_united;
+  r.splits_edge_two_edges = s.splits_edge_two_edges;
   r.duplicates_created = s.duplicates;
   r.vertex_boxes = s.vertex_boxes;
   r.components_split = s.components_split;
@@ -83,6 +85,10 @@ OctreeReport build_octree(const Domain3& domain, const OctreeOptions3& options) 
   tree_options.size_field = {options.size_field.points, options.size_field.sizes, options.size_field.lines,
                              options.size_field.path};
   tree_options.generic_grid = options.generic_grid;
+  if (options.light) {
+    tree_options.extended_margin = 1;
+    tree_options.separate = false;
+  }
   mv3d::OctreeBuilder builder(domain, std::move(tree_options));
   builder.build();
 

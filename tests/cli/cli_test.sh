@@ -192,6 +192,14 @@ contains "$work/cube_boxes.vtu" "Name=\"cone_kind\"" "octree .vtu has the cone k
 contains "$work/cube_boxes.vtu" "Name=\"protected_by\"" "octree .vtu has the protection step field"
 contains "$work/out" "^kinds .* other 0$" "every cube octree leaf is one of the thesis kinds"
 if /usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); sys.exit(0 if m.cells[0].type == 'hexahedron' and len(m.cells[0].data) > 0 else 1)" "$work/cube_boxes.vtu" 2>/dev/null; then ok; else fail "meshio does not read the octree boxes as hexahedra"; fi
+# --light is the octree `pqmesh mesh` tries first: on the cube, which keeps
+# it, both report the same leaves.
+expect 0 "mesh cube" -- "$pqmesh" mesh "$data/3d/cube.poly" -o "$work/cube_light.vtu"
+contains "$work/out" "^octree +lightest" "the cube's mesh comes from the lightest octree"
+mesh_leaves=$(sed -n 's/^leaves *\([0-9]*\):.*/\1/p' "$work/out")
+expect 0 "octree --light cube" -- "$pqmesh" octree "$data/3d/cube.poly" --generic-grid --light -o "$work/cube_light_boxes.vtu"
+light_leaves=$(sed -n 's/^leaves *\([0-9]*\) .*/\1/p' "$work/out")
+if [[ -n $mesh_leaves && $mesh_leaves == "$light_leaves" ]]; then ok; else fail "octree --light has '$light_leaves' leaves, mesh's octree '$mesh_leaves'"; fi
 expect 2 "octree of a 2D input" -- "$pqmesh" octree "$data/2d/square.poly" -o "$work/never_octree.vtu"
 expect 64 "octree without -o" -- "$pqmesh" octree "$data/3d/cube.poly"
 if [[ ! -e $work/never_octree.vtu ]]; then ok; else fail "refused octree run left a file"; fi
