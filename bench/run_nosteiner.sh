@@ -6,7 +6,7 @@
 # process (read, triangulate, internal verify, CDT baseline, refined
 # candidates, check, write .vtu), peak MiB, the pipeline's path and size
 # (triangles m), its min angle, the best refined candidate's min angle, the
-# CDT's min angle, g(P), the output's min angle, the upper bound min(60, C g)
+# CDT's min angle, g(P), the output's min angle, the upper bound (min(60, C g, alpha, segment, fan))
 # and output / upper bound, and what was written (path: the pipeline's mesh,
 # refined, or cdt-better). Not a test.
 #   bench/run_nosteiner.sh            (PQMESH_BIN overrides the binary)

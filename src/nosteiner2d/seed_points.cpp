@@ -22,8 +22,11 @@ void segment_apexes(const Domain2& domain, double target, std::vector<Vec2>& out
   for (std::size_t l = 0; l < domain.loops.size(); ++l) {
     const auto& loop = domain.loops[l];
     for (std::size_t k = 0; k < loop.size(); ++k) {
-      const double t = sb.side_angle[l][k];
-      if (!(t < target)) continue;
+      if (!(sb.side_angle[l][k] < target)) continue;
+      // The corner angles at a and b bound the empty isosceles triangle too (the sides at a, b).
+      const int count = static_cast<int>(loop.size()), ki = static_cast<int>(k);
+      const double t = std::min({sb.side_angle[l][k], make_frame(domain, int(l), ki, true).alpha,
+                                 make_frame(domain, int(l), (ki + 1) % count, true).alpha});
       const Vec2 a = P[static_cast<std::size_t>(loop[k])], b = P[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
       const Vec2 u = b - a, n = {-u.y, u.x};
       const Vec2 p = a + 0.5 * u + (0.5 * std::tan(0.5 * t)) * n;

@@ -6,11 +6,12 @@
 // differ much in length, its new points fall outside P and are given up).
 //
 //   - Segment apex: for each side ab whose segment bound t*(ab)
-//     (segment_bound.hpp) is below the target, the apex of the isosceles
-//     triangle on ab with base angles t*(ab) / 2. It is kept when it is
+//     (segment_bound.hpp) is below the target, with t = min(t*(ab), alpha_a,
+//     alpha_b) (the sides at a and b are not in t*), the apex of the
+//     isosceles triangle on ab with base angles t / 2. It is kept when it is
 //     strictly left of ab and its computed max(angle pab, angle pba) is at
-//     most 3/4 t*(ab): then it lies in the open isosceles triangle of base
-//     angles t*(ab), which meets no point of dP, so it is strictly inside P.
+//     most 3/4 t: then it lies in the open isosceles triangle of base angles
+//     t, which meets no point of dP, so it is strictly inside P.
 //   - Fan spokes: for each input vertex V whose fan bound A (fan_bound.hpp)
 //     is below the target, the k - 1 inner spoke ends of the fan of k =
 //     clamp(floor(alpha_V / A), 1, 64) equal angles whose spoke lengths grow

@@ -50,7 +50,7 @@ expect 64 "--thesis-fans without --no-boundary-steiner" -- "$pqmesh" mesh "$data
 [[ -e $work/never_fans.vtu ]] && fail "output written after a usage error" || ok
 
 # --min-angle A: reached on the square (its CDT has 45 degrees); on the 1-degree spike 10 degrees
-# is above the upper bound min(60, C g) and reported as not reachable. Both outputs pass the checker.
+# is above the upper bound and reported as not reachable. Both outputs pass the checker.
 expect 0 "square --min-angle 30" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/ma.vtu" --no-boundary-steiner --min-angle 30
 contains "$work/out" "^target +30 deg: reached" "--min-angle reached"
 expect 0 "spike_1deg --min-angle 10" -- "$pqmesh" mesh "$data/2d/spike_1deg.poly" -o "$work/ma1.vtu" --no-boundary-steiner --min-angle 10

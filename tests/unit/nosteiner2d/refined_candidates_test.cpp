@@ -17,6 +17,7 @@
 
 #include "corpus2d.hpp"
 #include "nosteiner2d/refined_candidate.hpp"
+#include "nosteiner2d/seed_points.hpp"
 #include "nosteiner2d/stages.hpp"
 #include "nosteiner_run.hpp"
 #include "pqmesh/check.hpp"
@@ -95,6 +96,36 @@ TEST(RefinedCandidate, RandomPolygonsWithHoles) {
       check_candidate(make_domain(test::random_polygon_with_holes(seed)), test::describe_polygon(seed), target);
 }
 
+// A seeded candidate (seed_points.hpp): valid without boundary Steiner
+// points, the input vertices first and unchanged, then the seeds in order,
+// every seed strictly inside P (exact locate). Returns the number of seeds.
+std::size_t check_seeded(const Domain2& d, const std::string& what, double target) {
+  SCOPED_TRACE(what + ", seeded, target " + std::to_string(target));
+  const std::vector<Vec2> seeds = detail::seed_points(d, target);
+  for (const Vec2 p : seeds) EXPECT_EQ(locate(d, p), Location::Inside) << p.x << " " << p.y;
+  if (seeds.empty()) return 0;
+  const detail::RefinedCandidate c = detail::refined_candidate(d, target, detail::refined_point_cap(d), seeds);
+  expect_valid(c.mesh, d);
+  const std::size_t n = d.pslg.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(c.mesh.vertices[i], d.pslg.vertices[i]);
+  for (std::size_t i = 0; i < seeds.size(); ++i) EXPECT_EQ(c.mesh.vertices[n + i], seeds[i]);
+  EXPECT_EQ(c.seeds, seeds.size());
+  EXPECT_EQ(c.mesh.vertices.size(), n + c.inserted);
+  return seeds.size();
+}
+
+TEST(SeededCandidate, CorpusHardCasesAndRandomPolygons) {
+  std::size_t inputs_with_seeds = 0;
+  for (const double target : {20.0, 30.0}) {
+    for (const char* name : test::kCorpus2d) inputs_with_seeds += check_seeded(test::corpus_domain(name), name, target) > 0;
+    for (const test::NamedDomain& c : test::hard_case_domains()) inputs_with_seeds += check_seeded(c.domain, c.name, target) > 0;
+    for (std::uint64_t seed = 1; seed <= 100; ++seed)
+      inputs_with_seeds += check_seeded(make_domain(test::random_polygon_with_holes(seed)), test::describe_polygon(seed), target) > 0;
+  }
+  std::printf("  seeded candidates made on %zu of %d (input, target) pairs\n", inputs_with_seeds, 2 * (8 + 9 + 100));
+  EXPECT_GT(inputs_with_seeds, 0u);
+}
+
 // The regular 1000-gon is convex, so its CDT is its Delaunay triangulation
 // and stays Delaunay under insertions: rule (b) never fires (refine.hpp:
 // the new point is at least the shortest edge away from every vertex of an
@@ -153,9 +184,10 @@ NoSteinerResult run_with_target(const char* name, double degrees) {
   return test::run_and_check(test::corpus_domain(name), name, st, o);
 }
 
-// A target above the upper bound min(60, C g(P)) cannot be reached by any
-// triangulation without boundary Steiner points (Theorem 21 with the constant
-// of docs/algorithm/nosteiner2d.md "The constant"): on the 1-degree spike the
+// A target above the upper bound (NoSteinerStats::upper_bound; its terms are
+// proved in docs/algorithm/nosteiner2d.md "The constant", "Refined
+// candidates", "The segment bound", "The fan bound") cannot be reached by any
+// triangulation without boundary Steiner points: on the 1-degree spike the
 // bound is below 10 degrees, so target 10 is reported as not reached.
 TEST(NoSteinerCandidates, TargetAboveTheBoundIsNotReached) {
   const NoSteinerResult r = run_with_target("spike_1deg", 10);
