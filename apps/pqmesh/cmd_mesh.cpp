@@ -221,7 +221,7 @@ const std::set<std::string> kMeshFlagsAnyMode = {"--quiet", "--protect-edges", "
                                                  "--aligned-grid", "--full-separation", "--no-improve", "--compress",
                                                  "--lfs-integral", "--quadtree"};
 const std::set<std::string> kMeshOptionsAnyMode = {"-o", "--output", "--max-size", "--size-field", "--format", "--target-aspect",
-                                                   "--refine-angle", "--min-angle"};
+                                                   "--min-dihedral", "--refine-angle", "--min-angle"};
 
 int run_mesh(const std::vector<std::string>& argv) {
 #if defined(__GLIBC__)

@@ -127,8 +127,11 @@ void print_improve_line(const TetMesh3& mesh, const TetMeshStats& s, const Mesh3
     std::cout << "off (--no-improve)\n";
     return;
   }
-  std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect) << "), "
-            << s.smoothed << " vertices smoothed, " << s.flips << " flips: tetrahedra " << s.constructed_tetrahedra
+  std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect);
+  if (run.options.min_dihedral > 0) std::cout << ", min dihedral " << fmt4(run.options.min_dihedral) << " deg";
+  std::cout << "), "
+            << s.smoothed << " vertices smoothed, " << s.flips << " flips (" << s.boundary_flips
+            << " on the boundary): tetrahedra " << s.constructed_tetrahedra
             << " -> " << mesh.tetrahedra.size() << ", max aspect ratio " << fmt4(s.constructed_max_aspect) << " -> "
             << fmt4(s.max_aspect) << ", dihedral min " << fmt4(s.constructed_min_dihedral) << " deg before\n";
   if (!s.improve_failure.empty())
@@ -226,6 +229,12 @@ int run_mesh3(const std::vector<std::string>& argv) {
     if (!(run.options.target_aspect >= 3))
       throw UsageError("--target-aspect must be at least 3 (the regular tetrahedron), got '" +
                        *args.option("--target-aspect") + "'");
+  }
+  if (args.option("--min-dihedral")) {
+    run.options.min_dihedral = args.number("--min-dihedral", 0);  // throws UsageError unless a finite number
+    if (!(run.options.min_dihedral > 0 && run.options.min_dihedral < 70.5))
+      throw UsageError("--min-dihedral must be above 0 and below 70.5 degrees (the regular tetrahedron's), got '" +
+                       *args.option("--min-dihedral") + "'");
   }
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);
   run.format = forced ? *forced : mesh_format_from_path(run.output);  // unknown extension: exit 2 before work

@@ -99,7 +99,8 @@ struct TetMeshOptions {
   bool warp = true;
   TetSeparation separation = TetSeparation::Adaptive;
   // Improvement after the construction (docs/algorithm/improve3d.md): edge
-  // collapses, then vertex smoothing and 2-3 / 3-2 flips, none of which
+  // collapses, then vertex smoothing and flips (2-3, edge removal, and
+  // edge removal inside a facet, which re-triangulates it), none of which
   // raises the worst aspect ratio above the construction's; input vertices,
   // edges, facets and markers are kept and max_size / size_field respected.
   // CLI --no-improve sets false.
@@ -108,6 +109,13 @@ struct TetMeshOptions {
   // their worst before and this aspect ratio (3: the regular tetrahedron).
   // Larger: fewer tetrahedra, worse typical shapes. CLI --target-aspect.
   double target_aspect = 8;
+  // Quality target of the improvement (degrees, 0: none; below 70.53, the
+  // regular tetrahedron's): in a region whose tetrahedra all meet
+  // target_aspect, a collapse may not make a tetrahedron whose minimum
+  // dihedral angle is below the smaller of this and the region's least
+  // before. Coarsening then stops earlier where the mesh is good; nothing
+  // guarantees the target is reached. CLI --min-dihedral.
+  double min_dihedral = 0;
   // Called at phase boundaries (may be empty).
   std::function<void(const TetMeshProgress&)> progress;
 };
@@ -161,12 +169,13 @@ struct TetMeshStats {
   double max_aspect = 0;  // of the returned mesh (tetrahedron_quality)
   // The construction's mesh before improvement: tetrahedra, worst aspect
   // ratio, dihedral extremes (degrees); and the improvement's collapses,
-  // vertices moved by smoothing, flips, time and, when the improved mesh
+  // vertices moved by smoothing, flips (of which boundary_flips changed
+  // boundary triangles), time and, when the improved mesh
   // failed the checker (then the construction's mesh is returned), the
   // checker's first line.
   std::int64_t constructed_tetrahedra = 0;
   double constructed_max_aspect = 0, constructed_min_dihedral = 0, constructed_max_dihedral = 0;
-  std::int64_t collapses = 0, smoothed = 0, flips = 0;
+  std::int64_t collapses = 0, smoothed = 0, flips = 0, boundary_flips = 0;
   double seconds_improve = 0;
   std::string improve_failure;
   int depth = 0;                                          // deepest leaf level

@@ -30,18 +30,21 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("light_rejected") = s.light_rejected,
                   py::arg("constructed_tetrahedra") = s.constructed_tetrahedra,
                   py::arg("constructed_max_aspect") = s.constructed_max_aspect, py::arg("collapses") = s.collapses,
-                  py::arg("smoothed") = s.smoothed, py::arg("flips") = s.flips,
+                  py::arg("smoothed") = s.smoothed, py::arg("flips") = s.flips, py::arg("boundary_flips") = s.boundary_flips,
                   py::arg("improve_failure") = s.improve_failure,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
 }
 
 py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,
-                        bool warp, bool full_separation, bool improve, double target_aspect) {
+                        bool warp, bool full_separation, bool improve, double target_aspect, double min_dihedral) {
   if (!(target_aspect >= 3)) throw py::value_error("target_aspect must be at least 3 (the regular tetrahedron)");
+  if (!(min_dihedral >= 0 && min_dihedral < 70.5))
+    throw py::value_error("min_dihedral must be at least 0 and below 70.5 degrees (the regular tetrahedron's)");
   TetMeshOptions options;
   options.improve = improve;
   options.target_aspect = target_aspect;
+  options.min_dihedral = min_dihedral;
   if (full_separation) options.separation = TetSeparation::Always;
   options.max_size = max_size;
   options.generic_grid = generic_grid;
@@ -80,7 +83,7 @@ py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::ob
 void bind_mesh3d(py::module_& m) {
   m.def("tet_mesh", &run_tet_mesh, py::arg("domain"), py::arg("max_size"), py::arg("size_field"),
         py::arg("generic_grid"), py::arg("warp"), py::arg("full_separation"), py::arg("improve"),
-        py::arg("target_aspect"),
+        py::arg("target_aspect"), py::arg("min_dihedral"),
         "tet_mesh(domain, options); see pqmesh.tetrahedralize.");
 }
 

@@ -65,7 +65,7 @@ bool Collapser::try_collapse(int u, int v) {
   if (!within_size()) return refuse(Refusal::Size);
   if (!quality_allows()) return refuse(Refusal::Quality);
   list_new_neighbours();
-  mesh_.apply({u_, v_, dying_, moving_, new_aspect_, dying_faces_, moving_faces_});
+  mesh_.apply({u_, v_, dying_, moving_, new_aspect_, new_dihedral_, dying_faces_, moving_faces_});
   forget();
   return true;
 }
@@ -287,22 +287,33 @@ bool Collapser::moved_positive() const {
   return true;
 }
 
-// Rule 4: the new region (resting and moved tetrahedra) stays within
-// min(cap, max(old region worst, target)); the old region is the tetrahedra
-// of u and v. NaN never passes (the comparisons fail).
+// Rules 4 and 6 (improve.hpp): the new region (resting and moved tetrahedra)
+// stays within min(cap, max(old region worst, target)); the old region is the
+// tetrahedra of u and v. When the old region is within target, every moved
+// tetrahedron's minimum dihedral angle is at least min(limits_.min_dihedral,
+// the old region's least). NaN never passes (the comparisons fail).
 bool Collapser::quality_allows() {
-  double old_worst = 0, resting_worst = 0;
-  for (const int t : u_tets_.list) old_worst = std::max(old_worst, mesh_.aspect(t));
-  for (const int t : resting_) resting_worst = std::max(resting_worst, mesh_.aspect(t));
+  double old_worst = 0, resting_worst = 0, old_least = 180;
+  for (const int t : u_tets_.list) {
+    old_worst = std::max(old_worst, mesh_.aspect(t));
+    old_least = std::min(old_least, mesh_.dihedral(t));
+  }
+  for (const int t : resting_) {
+    resting_worst = std::max(resting_worst, mesh_.aspect(t));
+    old_least = std::min(old_least, mesh_.dihedral(t));
+  }
   old_worst = std::max(old_worst, resting_worst);
   const double limit = std::min(limits_.cap, std::max(old_worst, limits_.target));
+  const double floor = old_worst > limits_.target ? 0 : std::min(limits_.min_dihedral, old_least);
   if (!(resting_worst <= limit)) return false;
   new_aspect_.clear();
+  new_dihedral_.clear();
   for (const int t : moving_) {
     const auto k = moved(t);
-    const double a = memo_(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])).aspect_ratio;
-    if (!(a <= limit)) return false;
-    new_aspect_.push_back(a);
+    const TetQuality q = memo_(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3]));
+    if (!(q.aspect_ratio <= limit) || !(q.min_dihedral_deg >= floor)) return false;
+    new_aspect_.push_back(q.aspect_ratio);
+    new_dihedral_.push_back(q.min_dihedral_deg);
   }
   return true;
 }

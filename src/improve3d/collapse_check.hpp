@@ -22,6 +22,7 @@ namespace pqmesh::improve3d::detail {
 struct QualityLimits {
   double cap = 0;     // ImproveOptions::aspect_cap
   double target = 0;  // ImproveOptions::target_aspect
+  double min_dihedral = 0;  // ImproveOptions::min_dihedral (degrees)
 };
 
 // Why collapses were refused (counts for tuning: Collapser::refusals).
@@ -92,7 +93,7 @@ class Collapser {
   std::vector<int> dying_faces_, moving_faces_, resting_faces_;
   std::vector<int> near_u_list_, new_neighbours_;
   std::vector<std::pair<int, int>> ring_edges_;  // the edges of Lk(uv), (smaller, larger)
-  std::vector<double> new_aspect_;
+  std::vector<double> new_aspect_, new_dihedral_;
   // Marks equal to stamp_ are set in the current try: neighbours of u, ring,
   // neighbours of v, boundary neighbours of u, third vertices of the dying
   // boundary triangles.

@@ -63,6 +63,7 @@ void CollapseMesh::apply(const Collapse& c) {
     const int t = c.moving_tets[i];
     repoint(tets_[static_cast<std::size_t>(t)], c.u, c.v);
     aspect_[static_cast<std::size_t>(t)] = c.new_aspect[i];
+    dihedral_[static_cast<std::size_t>(t)] = c.new_dihedral[i];
   }
   for (const int f : c.moving_faces) repoint(faces_[static_cast<std::size_t>(f)], c.u, c.v);
   tets_of_vertex_.append(c.v, c.moving_tets);
@@ -79,13 +80,6 @@ double CollapseMesh::worst_aspect() const {
   for (std::size_t t = 0; t < tets_.size(); ++t)
     if (tets_[t][0] >= 0) worst = std::max(worst, aspect_[t]);
   return worst;
-}
-
-void CollapseMesh::measure_dihedrals(TetrahedronQualityMemo& memo) {
-  for (std::size_t t = 0; t < tets_.size(); ++t) {
-    const auto& k = tets_[t];
-    if (k[0] >= 0) dihedral_[t] = memo(point(k[0]), point(k[1]), point(k[2]), point(k[3])).min_dihedral_deg;
-  }
 }
 
 double CollapseMesh::min_dihedral() const {
@@ -118,6 +112,19 @@ int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect
 void CollapseMesh::remove_tet(int t) {
   tets_[static_cast<std::size_t>(t)][0] = -1;  // dropped from the vertex segments when next walked
   --live_tets_;
+}
+
+int CollapseMesh::add_face(const std::array<int, 3>& k, int marker, int facet) {
+  const int f = static_cast<int>(faces_.size());
+  faces_.push_back(k);
+  face_markers_.push_back(marker);
+  face_facets_.push_back(facet);
+  for (const int x : k) faces_of_vertex_.append(x, std::span<const int>(&f, 1));
+  return f;
+}
+
+void CollapseMesh::remove_face(int f) {
+  faces_[static_cast<std::size_t>(f)][0] = -1;  // dropped from the vertex segments when next walked
 }
 
 void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) const {

@@ -9,7 +9,8 @@
 // survivors compactly in their old order (deterministic). After the
 // collapses, smoothing (smooth.hpp) moves vertices and flips (flips.hpp)
 // replace tetrahedra: a new tetrahedron always gets a new id (appended), so
-// the survivors keep their order and the new ones follow in creation order.
+// the survivors keep their order and the new ones follow in creation order;
+// so does a boundary triangle made by a flip.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -24,7 +25,7 @@ namespace pqmesh::improve3d::detail {
 
 class CollapseMesh {
  public:
-  // Computes every tetrahedron's aspect ratio (tetrahedron_quality, through memo).
+  // Computes every tetrahedron's aspect ratio and minimum dihedral angle (tetrahedron_quality, through memo).
   CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facets, TetrahedronQualityMemo& memo);
 
   int vertex_count() const { return static_cast<int>(points_.size()); }
@@ -34,12 +35,12 @@ class CollapseMesh {
   int tet_marker(int t) const { return tet_markers_[static_cast<std::size_t>(t)]; }
   bool one_region() const { return one_region_; }  // every tetrahedron has the same marker
   double aspect(int t) const { return aspect_[static_cast<std::size_t>(t)]; }
-  // The minimum dihedral angle (degrees) of t: valid only after measure_dihedrals()
-  // (collapses do not keep it), kept by move_vertex / add_tet.
+  // The minimum dihedral angle (degrees) of t, kept by every change.
   double dihedral(int t) const { return dihedral_[static_cast<std::size_t>(t)]; }
   int tet_count() const { return static_cast<int>(tets_.size()); }  // ids, live or dead
   const std::array<int, 3>& face(int f) const { return faces_[static_cast<std::size_t>(f)]; }
   int face_facet(int f) const { return face_facets_[static_cast<std::size_t>(f)]; }
+  int face_marker(int f) const { return face_markers_[static_cast<std::size_t>(f)]; }
   std::int64_t live_tets() const { return live_tets_; }
   std::int64_t live_vertices() const { return live_vertices_; }
 
@@ -52,7 +53,8 @@ class CollapseMesh {
     int u = -1, v = -1;
     std::span<const int> dying_tets;     // hold u and v
     std::span<const int> moving_tets;    // hold u, not v: u becomes v
-    std::span<const double> new_aspect;  // of moving_tets[i] after the change
+    std::span<const double> new_aspect;    // of moving_tets[i] after the change
+    std::span<const double> new_dihedral;  // its minimum dihedral angle
     std::span<const int> dying_faces;    // boundary triangles holding u and v
     std::span<const int> moving_faces;   // boundary triangles holding u, not v
   };
@@ -60,9 +62,7 @@ class CollapseMesh {
   void apply(const Collapse& c);
 
   double worst_aspect() const;
-  // Measures the minimum dihedral angle of every live tetrahedron (through memo).
-  void measure_dihedrals(TetrahedronQualityMemo& memo);
-  double min_dihedral() const;  // over the live tetrahedra; needs measure_dihedrals()
+  double min_dihedral() const;  // over the live tetrahedra
 
   // Smoothing: v goes to p; tets[i] (the star of v) gets aspect[i], dihedral[i].
   void move_vertex(int v, Vec3 p, std::span<const int> tets, std::span<const double> aspect,
@@ -70,6 +70,9 @@ class CollapseMesh {
   // Flips: a new tetrahedron (new id, returned) and the deletion of one.
   int add_tet(const std::array<int, 4>& k, int marker, double aspect, double dihedral);
   void remove_tet(int t);
+  // Boundary flips: a new boundary triangle (new id, returned) and the deletion of one.
+  int add_face(const std::array<int, 3>& k, int marker, int facet);
+  void remove_face(int f);
   // The survivors, renumbered in their old order, into mesh and face_facets.
   void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
 

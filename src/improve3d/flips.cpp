@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
+#include <limits>
 #include <utility>
 
+#include "improve3d/permutation.hpp"
 #include "improve3d/smooth.hpp"
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
@@ -12,39 +15,18 @@ namespace pqmesh::improve3d::detail {
 
 namespace {
 
+constexpr double kForbidden = -std::numeric_limits<double>::infinity();
+
 template <std::size_t K>
 bool holds(const std::array<int, K>& element, int x) {
   return std::find(element.begin(), element.end(), x) != element.end();
 }
 
-bool odd(const std::array<int, 4>& p) {
-  int inversions = 0;
-  for (std::size_t a = 0; a < 4; ++a)
-    for (std::size_t b = a + 1; b < 4; ++b) inversions += p[a] > p[b];
-  return (inversions & 1) != 0;
-}
-
-// The vertices of k as an even permutation (so as positive as k) with k[i]
-// first and k[j] second.
-std::array<int, 4> starting_with(const std::array<int, 4>& k, int i, int j) {
-  std::array<int, 4> p{i, j, -1, -1};
-  std::size_t n = 2;
-  for (int x = 0; x < 4; ++x)
-    if (x != i && x != j) p[n++] = x;
-  if (odd(p)) std::swap(p[2], p[3]);
-  return {k[static_cast<std::size_t>(p[0])], k[static_cast<std::size_t>(p[1])], k[static_cast<std::size_t>(p[2])],
-          k[static_cast<std::size_t>(p[3])]};
-}
-
-// The vertices of k as an even permutation with k[i] last.
-std::array<int, 4> ending_with(const std::array<int, 4>& k, int i) {
-  std::array<int, 4> p{-1, -1, -1, i};
-  std::size_t n = 0;
-  for (int x = 0; x < 4; ++x)
-    if (x != i) p[n++] = x;
-  if (odd(p)) std::swap(p[0], p[1]);
-  return {k[static_cast<std::size_t>(p[0])], k[static_cast<std::size_t>(p[1])], k[static_cast<std::size_t>(p[2])],
-          k[static_cast<std::size_t>(p[3])]};
+// The vertex of face f that is neither a nor b.
+int third(const std::array<int, 3>& f, int a, int b) {
+  for (const int x : f)
+    if (x != a && x != b) return x;
+  return -1;
 }
 
 }  // namespace
@@ -70,56 +52,95 @@ bool Flipper::try_tet(int t) {
     around_[i].clear();
     mesh_.tets_of(k[i], around_[i]);
   }
-  Flip best, trial;
   bool found = false;
   const auto consider = [&](bool possible) {
-    if (!possible || !measure(trial)) return;
-    if (found && !(trial.min_dihedral > best.min_dihedral)) return;
-    best = trial;
+    if (!possible || !measure(trial_)) return;
+    if (found && !(trial_.min_dihedral > best_.min_dihedral)) return;
+    std::swap(best_, trial_);
     found = true;
   };
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) consider(edge_flip(t, i, j, trial));
-  for (int i = 0; i < 4; ++i) consider(face_flip(t, i, trial));
+    for (int j = i + 1; j < 4; ++j) consider(edge_removal(t, i, j, trial_));
+  for (int i = 0; i < 4; ++i) consider(face_flip(t, i, trial_));
   if (!found) return false;
-  apply(best);
+  apply(best_);
   return true;
 }
 
-// The 3-2 flip of edge (k[i], k[j]) of t; false when it is not interior with exactly three tetrahedra.
-bool Flipper::edge_flip(int t, int i, int j, Flip& flip) {
-  const auto [a, b, c, d] = starting_with(mesh_.tet(t), i, j);
-  flip.old_count = 0;
-  for (const int s : around_[static_cast<std::size_t>(i)])
-    if (holds(mesh_.tet(s), b)) {
-      if (flip.old_count == 3) return false;
-      flip.old_tets[static_cast<std::size_t>(flip.old_count++)] = s;
-    }
-  if (flip.old_count != 3) return false;
-  // The other two are abde and abec: each holds one of c, d and the same e.
-  int e = -1;
-  for (const int s : flip.old_tets) {
-    if (s == t) continue;
-    const auto& h = mesh_.tet(s);
-    if (holds(h, c) == holds(h, d)) return false;
-    for (const int x : h)
-      if (x != a && x != b && x != c && x != d) {
-        if (e >= 0 && e != x) return false;
-        e = x;
+// The edge removal of edge (k[i], k[j]) of t, with the best triangulation of its ring; false when
+// the edge may not be removed (flips.hpp) or no triangulation has only positive, good enough tetrahedra.
+bool Flipper::edge_removal(int t, int i, int j, Flip& flip) {
+  const int a = mesh_.tet(t)[static_cast<std::size_t>(i)], b = mesh_.tet(t)[static_cast<std::size_t>(j)];
+  if (!gather_edge_ring(mesh_, a, b, around_[static_cast<std::size_t>(i)], kMaxRingVertices, ring_)) return false;
+  const std::vector<int>& r = ring_.ring;
+  const int m = static_cast<int>(r.size());
+  if (m < 3 || m > kMaxRingVertices || !one_region(ring_.tets)) return false;
+  flip.old_tets = ring_.tets;
+  flip.old_faces.clear();
+  flip.faces.clear();
+  if (ring_.closed ? on_boundary(a, b, -1) : !boundary_pair(flip)) return false;
+  double old_worst = 0;
+  for (const int s : ring_.tets) old_worst = std::max(old_worst, mesh_.aspect(s));
+  const double limit = std::min(old_worst, cap_);
+  RingScores scores(m);
+  for (int x = 0; x < m; ++x)
+    for (int y = x + 1; y < m; ++y)
+      for (int z = y + 1; z < m; ++z) {
+        const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
+                  rz = r[static_cast<std::size_t>(z)];
+        scores.set(x, y, z, score({a, rx, ry, rz}, {rx, ry, rz, b}, limit));
       }
+  if (best_ring_triangulation(scores, triangles_) == kForbidden) return false;
+  flip.tets.clear();
+  int apex = -1;  // of the triangle on the side (r_0, r_m-1)
+  for (const auto& [x, y, z] : triangles_) {
+    const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
+              rz = r[static_cast<std::size_t>(z)];
+    flip.tets.push_back({a, rx, ry, rz});
+    flip.tets.push_back({rx, ry, rz, b});
+    if (x == 0 && z == m - 1) apex = ry;
   }
-  if (e < 0 || on_boundary(a, b, -1)) return false;
-  flip.count = 2;
-  flip.tets[0] = {e, b, c, d};
-  flip.tets[1] = {a, e, c, d};
+  if (!ring_.closed) replacement_faces(apex, flip);
   return true;
+}
+
+// The two boundary triangles abc, abd of the open ring's edge into flip.old_faces; true when
+// they may be flipped: same facet, same marker, c and d the ring's ends, a, b, c, d coplanar (exact).
+bool Flipper::boundary_pair(Flip& flip) {
+  const int a = ring_.a, b = ring_.b;
+  faces_.clear();
+  mesh_.faces_of(a, faces_);
+  for (const int f : faces_)
+    if (holds(mesh_.face(f), b)) flip.old_faces.push_back(f);
+  if (flip.old_faces.size() != 2) return false;
+  const int f = flip.old_faces[0], g = flip.old_faces[1];
+  if (mesh_.face_facet(f) != mesh_.face_facet(g) || mesh_.face_marker(f) != mesh_.face_marker(g)) return false;
+  const int c = third(mesh_.face(f), a, b), d = third(mesh_.face(g), a, b);
+  const int first = ring_.ring.front(), last = ring_.ring.back();
+  if (!((c == first && d == last) || (c == last && d == first))) return false;
+  return orient3d(mesh_.point(a), mesh_.point(b), mesh_.point(c), mesh_.point(d)) == Sign::Zero;
+}
+
+// The boundary triangles (a, c, d) and (b, c, d), c, d the ring's ends, both tetrahedra of the
+// triangle (c, apex, d) behind them, each facing out as the first old boundary triangle does.
+void Flipper::replacement_faces(int apex, Flip& flip) {
+  const std::vector<int>& r = ring_.ring;
+  const int c = r.front(), d = r.back();
+  const std::array<int, 3>& old = mesh_.face(flip.old_faces[0]);
+  const int old_apex = holds(old, c) ? r[1] : r[r.size() - 2];  // of the old tetrahedron behind it
+  const Sign outward =
+      orient3d(mesh_.point(old[0]), mesh_.point(old[1]), mesh_.point(old[2]), mesh_.point(old_apex));
+  for (const int end : {ring_.a, ring_.b}) {
+    const bool keep = orient3d(mesh_.point(end), mesh_.point(c), mesh_.point(d), mesh_.point(apex)) == outward;
+    flip.faces.push_back(keep ? std::array<int, 3>{end, c, d} : std::array<int, 3>{end, d, c});
+  }
 }
 
 // The 2-3 flip of the face of t opposite k[i]; false when that face is on the boundary.
 bool Flipper::face_flip(int t, int i, Flip& flip) {
   const auto [a, b, c, d] = ending_with(mesh_.tet(t), i);
-  const std::size_t at_a = static_cast<std::size_t>(std::find(mesh_.tet(t).begin(), mesh_.tet(t).end(), a) -
-                                                    mesh_.tet(t).begin());
+  const std::size_t at_a = static_cast<std::size_t>(
+      std::distance(mesh_.tet(t).begin(), std::find(mesh_.tet(t).begin(), mesh_.tet(t).end(), a)));
   int other = -1;
   for (const int s : around_[at_a])
     if (s != t && holds(mesh_.tet(s), b) && holds(mesh_.tet(s), c)) other = s;
@@ -127,13 +148,10 @@ bool Flipper::face_flip(int t, int i, Flip& flip) {
   int e = -1;
   for (const int x : mesh_.tet(other))
     if (x != a && x != b && x != c) e = x;
-  flip.old_count = 2;
-  flip.old_tets[0] = t;
-  flip.old_tets[1] = other;
-  flip.count = 3;
-  flip.tets[0] = {a, b, e, d};
-  flip.tets[1] = {b, c, e, d};
-  flip.tets[2] = {c, a, e, d};
+  flip.old_tets = {t, other};
+  flip.old_faces.clear();
+  flip.faces.clear();
+  flip.tets = {{a, b, e, d}, {b, c, e, d}, {c, a, e, d}};
   return true;
 }
 
@@ -145,33 +163,46 @@ bool Flipper::on_boundary(int a, int b, int c) {
                      [&](int f) { return holds(mesh_.face(f), b) && (c < 0 || holds(mesh_.face(f), c)); });
 }
 
-// Rules 1, 3, 5 of flips.hpp and the region part of rule 2.
+bool Flipper::one_region(const std::vector<int>& tets) const {
+  return std::all_of(tets.begin(), tets.end(), [&](int s) { return mesh_.tet_marker(s) == mesh_.tet_marker(tets[0]); });
+}
+
+// The score of a ring triangle: the smaller minimum dihedral angle of its two tetrahedra, or
+// kForbidden when one is not positive (exact), beyond the size bound, or above the aspect limit.
+double Flipper::score(const std::array<int, 4>& lower, const std::array<int, 4>& upper, double limit) const {
+  double least = 180;
+  for (const auto* k : {&lower, &upper}) {
+    const std::array<Vec3, 4> p = {mesh_.point((*k)[0]), mesh_.point((*k)[1]), mesh_.point((*k)[2]),
+                                   mesh_.point((*k)[3])};
+    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return kForbidden;
+    if (size_.bounded() && !size_.allows(p)) return kForbidden;
+    const TetQuality q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+    if (!(q.aspect_ratio <= limit) || !(q.min_dihedral_deg == q.min_dihedral_deg)) return kForbidden;
+    least = std::min(least, q.min_dihedral_deg);
+  }
+  return least;
+}
+
+// Rules 1, 3, 4, 5 of flips.hpp and the region part of rule 2.
 bool Flipper::measure(Flip& flip) const {
   double old_worst = 0, old_min = 180;
-  const int marker = mesh_.tet_marker(flip.old_tets[0]);
-  for (int n = 0; n < flip.old_count; ++n) {
-    const int s = flip.old_tets[static_cast<std::size_t>(n)];
-    if (mesh_.tet_marker(s) != marker) return false;
+  if (!one_region(flip.old_tets)) return false;
+  for (const int s : flip.old_tets) {
     old_worst = std::max(old_worst, mesh_.aspect(s));
     old_min = std::min(old_min, mesh_.dihedral(s));
   }
-  for (int n = 0; n < flip.count; ++n) {
-    const auto& k = flip.tets[static_cast<std::size_t>(n)];
+  const double limit = std::min(old_worst, cap_);
+  flip.aspect.clear();
+  flip.dihedral.clear();
+  flip.min_dihedral = 180;
+  for (const auto& k : flip.tets) {
     const std::array<Vec3, 4> p = {mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])};
     if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
-    if (size_.bounded() && !size_.allows(p)) return false;  // rule 4
-  }
-  const double limit = std::min(old_worst, cap_);
-  flip.worst_aspect = 0;
-  flip.min_dihedral = 180;
-  for (int n = 0; n < flip.count; ++n) {
-    const std::size_t x = static_cast<std::size_t>(n);
-    const auto& k = flip.tets[x];
-    const TetQuality q = tetrahedron_quality(mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3]));
+    if (size_.bounded() && !size_.allows(p)) return false;
+    const TetQuality q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
     if (!(q.aspect_ratio <= limit)) return false;  // NaN never passes
-    flip.aspect[x] = q.aspect_ratio;
-    flip.dihedral[x] = q.min_dihedral_deg;
-    flip.worst_aspect = std::max(flip.worst_aspect, q.aspect_ratio);
+    flip.aspect.push_back(q.aspect_ratio);
+    flip.dihedral.push_back(q.min_dihedral_deg);
     flip.min_dihedral = std::min(flip.min_dihedral, q.min_dihedral_deg);
   }
   return flip.min_dihedral >= old_min + kMinDihedralGain;
@@ -179,11 +210,14 @@ bool Flipper::measure(Flip& flip) const {
 
 void Flipper::apply(const Flip& flip) {
   const int marker = mesh_.tet_marker(flip.old_tets[0]);
-  for (int n = 0; n < flip.old_count; ++n) mesh_.remove_tet(flip.old_tets[static_cast<std::size_t>(n)]);
-  for (int n = 0; n < flip.count; ++n) {
-    const std::size_t x = static_cast<std::size_t>(n);
+  for (const int s : flip.old_tets) mesh_.remove_tet(s);
+  for (std::size_t x = 0; x < flip.tets.size(); ++x)
     created_.push_back(mesh_.add_tet(flip.tets[x], marker, flip.aspect[x], flip.dihedral[x]));
-  }
+  if (flip.faces.empty()) return;
+  const int face_marker = mesh_.face_marker(flip.old_faces[0]), facet = mesh_.face_facet(flip.old_faces[0]);
+  for (const int f : flip.old_faces) mesh_.remove_face(f);
+  for (const auto& f : flip.faces) mesh_.add_face(f, face_marker, facet);
+  ++boundary_flips_;
 }
 
 }  // namespace pqmesh::improve3d::detail

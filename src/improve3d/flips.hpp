@@ -1,61 +1,84 @@
 #pragma once
-// 2-3 and 3-2 flips after the collapses, monotone in quality (improve.hpp,
+// Flips after the collapses, monotone in quality (improve.hpp,
 // ../shared/IMPROVEMENT.md "The rule that keeps a guarantee").
 //
 // 2-3: an interior triangle abc shared by tetrahedra abcd and abce becomes
-// the edge de and three tetrahedra abde, bcde, cade. 3-2: an interior edge ab
-// with exactly three tetrahedra abcd, abde, abec becomes the triangle cde and
-// two tetrahedra cdea, cdeb. A flip is accepted only when
+// the edge de and three tetrahedra abde, bcde, cade.
+// Edge removal (edge_ring.hpp, ring_triangulation.hpp): the tetrahedra around
+// edge ab, (a, b, r_i, r_i+1), are replaced, for a triangulation of the
+// polygon r_0 .. r_m-1, by the tetrahedra (a, r_i, r_k, r_j) and (r_i, r_k,
+// r_j, b) of each of its triangles (i < k < j); the triangulation chosen is
+// the one whose tetrahedra have the largest least minimum dihedral angle.
+//   * an interior edge (closed ring of 3 to kMaxRingVertices tetrahedra;
+//     three: the 3-2 flip, four: the 4-4 flips);
+//   * an edge inside a facet (open ring of 2 to kMaxRingVertices - 1
+//     tetrahedra between the two boundary triangles abc and abd, c = r_0,
+//     d = r_m-1): the polygon's side cd becomes a boundary edge, abc and abd
+//     become acd and bcd (two tetrahedra: the 2-2 flip). Only when abc and abd
+//     lie on the same facet, carry the same marker, and a, b, c, d are exactly
+//     coplanar (exact orient3d = 0), so acd and bcd cover exactly what abc and
+//     abd covered; each new triangle faces out as the old ones did (exact
+//     orient3d against its tetrahedron's fourth vertex).
+// A flip is accepted only when
 //   1. every new tetrahedron is positively oriented (exact orient3d). The new
-//      tetrahedra then fill exactly the old ones' union (de crosses abc, or ab
-//      crosses cde, in its interior), so the mesh stays a valid triangulation;
-//      the new edge de (2-3) or triangle cde (3-2) cannot exist elsewhere,
-//      since it crosses a face (an edge) of the old mesh;
-//   2. the triangle abc (2-3) is no boundary triangle and the edge ab (3-2) is
-//      on none, and the old tetrahedra share one region marker: vertices and
-//      boundary triangles never change;
+//      tetrahedra then fill exactly the old ones' union (Shewchuk 2002: both
+//      fans of the polygon's triangles, seen from a and from b, are
+//      positive), so the mesh stays a valid triangulation; a new edge or
+//      triangle crosses the removed edge or face, so it exists nowhere else;
+//   2. the old tetrahedra share one region marker; a 2-3 flip's triangle is
+//      no boundary triangle; vertices never change, nor does any boundary
+//      triangle except as above;
 //   3. the new tetrahedra's worst aspect ratio is at most the old ones' and at
 //      most aspect_cap;
 //   4. every new tetrahedron is within the size bound (size_bound.hpp);
 //   5. their minimum dihedral angle exceeds the old ones' by at least
 //      kMinDihedralGain (smooth.hpp): strict progress, so the passes end.
 // Order: a pass visits the live tetrahedra whose minimum dihedral angle is
-// below kWorkBelowDihedral (smooth.hpp), smallest first, ties by id; at each it evaluates the 3-2 flips of its six
-// edges and the 2-3 flips of its four faces, in that enumeration order, and
+// below kWorkBelowDihedral (smooth.hpp), smallest first, ties by id; at each it evaluates the edge removals of
+// its six edges and the 2-3 flips of its four faces, in that enumeration order, and
 // does the best accepted one (largest new minimum dihedral, ties: the first).
-// New tetrahedra get new ids (collapse_mesh.hpp) and wait for the next pass.
+// New tetrahedra and boundary triangles get new ids (collapse_mesh.hpp); new
+// tetrahedra wait for the next pass. Cost per tetrahedron visited: O(1)
+// ring gathers and kMaxRingVertices^3 quality evaluations at most.
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "improve3d/collapse_mesh.hpp"
+#include "improve3d/edge_ring.hpp"
+#include "improve3d/ring_triangulation.hpp"
 #include "improve3d/size_bound.hpp"
 
 namespace pqmesh::improve3d::detail {
 
 class Flipper {
  public:
-  // mesh: after measure_dihedrals().
   Flipper(CollapseMesh& mesh, const SizeBound& size, double aspect_cap);
 
   // One pass; returns the number of flips.
   std::int64_t pass();
   // The tetrahedra made by the last pass (live or not).
   const std::vector<int>& created() const { return created_; }
+  // Flips that changed boundary triangles, so far.
+  std::int64_t boundary_flips() const { return boundary_flips_; }
 
  private:
   struct Flip {
-    std::array<int, 3> old_tets{};
-    int old_count = 0;
-    std::array<std::array<int, 4>, 3> tets{};
-    int count = 0;
-    std::array<double, 3> aspect{}, dihedral{};
-    double worst_aspect = 0, min_dihedral = 0;
+    std::vector<int> old_tets;
+    std::vector<std::array<int, 4>> tets;
+    std::vector<double> aspect, dihedral;
+    std::vector<int> old_faces;              // boundary triangles replaced
+    std::vector<std::array<int, 3>> faces;   // their replacements
+    double min_dihedral = 0;
   };
   bool try_tet(int t);
-  bool edge_flip(int t, int i, int j, Flip& flip);
+  bool edge_removal(int t, int i, int j, Flip& flip);
+  bool boundary_pair(Flip& flip);
+  void replacement_faces(int apex, Flip& flip);
   bool face_flip(int t, int i, Flip& flip);
   bool on_boundary(int a, int b, int c);
+  bool one_region(const std::vector<int>& tets) const;
+  double score(const std::array<int, 4>& lower, const std::array<int, 4>& upper, double limit) const;
   bool measure(Flip& flip) const;
   void apply(const Flip& flip);
 
@@ -64,6 +87,10 @@ class Flipper {
   double cap_;
   std::array<std::vector<int>, 4> around_;  // tetrahedra of each vertex of the current tetrahedron
   std::vector<int> faces_, created_;
+  EdgeRing ring_;
+  std::vector<std::array<int, 3>> triangles_;
+  Flip best_, trial_;
+  std::int64_t boundary_flips_ = 0;
 };
 
 }  // namespace pqmesh::improve3d::detail

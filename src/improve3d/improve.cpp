@@ -263,6 +263,7 @@ std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const de
     if (flipped == 0) break;
   }
   stats.flips += flips;
+  stats.boundary_flips += flipper.boundary_flips();
   stats.smoothed += smoother.moved_vertices();
   return smoother.moved_vertices() + flips;
 }
@@ -277,7 +278,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   CollapseMesh work(mesh, face_facets, memo);
   const detail::VertexClasses classes = detail::classify_vertices(domain, mesh, face_facets);
   const detail::SizeBound size(options.max_size, options.size_points, options.sizes);
-  Collapser collapser(work, classes, size, {options.aspect_cap, options.target_aspect}, memo);
+  Collapser collapser(work, classes, size, {options.aspect_cap, options.target_aspect, options.min_dihedral}, memo);
 
   ImproveStats stats;
   stats.tetrahedra_before = work.live_tets();
@@ -294,7 +295,6 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
       coarsener.stars_changed(changed, new_edges);
     }
     const std::int64_t collapses = collapse_passes(coarsener, collapser, stats);
-    work.measure_dihedrals(memo);  // collapses do not keep them; smoothing and flips need them
     if (round == 0) stats.min_dihedral_collapsed = work.min_dihedral();
     if (round > 0 && collapses == 0) break;
     changes.take(work);

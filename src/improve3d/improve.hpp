@@ -15,13 +15,18 @@
 //      after) is at most min(aspect_cap, max(old region worst, target_aspect)),
 //      the old region being the tetrahedra of u and v before;
 //   5. every new tetrahedron's longest edge is within the size bound
-//      (size_bound.hpp: sqrt(3) times the size asked at its centroid).
+//      (size_bound.hpp: sqrt(3) times the size asked at its centroid);
+//   6. when the old region's worst aspect ratio is at most target_aspect,
+//      every new tetrahedron's minimum dihedral angle is at least
+//      min(min_dihedral, the old region's least): a quality target that
+//      stops coarsening from spoiling good regions (0: off).
 // With aspect_cap = the construction's worst aspect ratio, the coarsened
 // mesh's worst never exceeds it, so every bound proved for the construction
 // holds for the result.
 //
-// After the collapses, passes of vertex smoothing (smooth.hpp) and of 2-3 / 3-2
-// flips of interior faces and edges (flips.hpp) raise the minimum dihedral
+// After the collapses, passes of vertex smoothing (smooth.hpp) and of flips
+// (2-3, and edge removal of interior edges and of edges inside a facet;
+// flips.hpp) raise the minimum dihedral
 // angle; then the collapses run again (smoothing and flips make room for
 // them), for ImproveOptions::rounds rounds or until a round collapses
 // nothing. Smoothing and flips: each accepted operation keeps every changed tetrahedron positive
@@ -29,7 +34,8 @@
 // (and keeps it <= aspect_cap), raises its minimum dihedral angle by a fixed
 // least gain, and keeps the boundary (smoothing moves only interior vertices
 // and vertices inside an axis-aligned facet, within its plane; flips never
-// change a vertex or a boundary triangle). So the minimum dihedral angle never falls and
+// change a vertex, and change boundary triangles only by re-triangulating two
+// exactly coplanar ones of one facet). So the minimum dihedral angle never falls and
 // the worst aspect ratio never rises in these passes.
 #include <cstdint>
 #include <limits>
@@ -48,6 +54,9 @@ struct ImproveOptions {
   // A collapse may raise the worst aspect ratio of the region it changes up to
   // max(the old region's worst, target_aspect), never above aspect_cap.
   double target_aspect = 6.0;
+  // Where the tetrahedra of u and v all meet target_aspect, a collapse may not make a tetrahedron whose
+  // minimum dihedral angle (degrees) is below the smaller of this and their least.
+  double min_dihedral = 0;
   // Size bound (the user's --max-size and size field): an operation is refused if a new tetrahedron's longest
   // edge exceeds sqrt(3) * min(max_size, min_i sizes[i] + |g - points[i]|) at its centroid g (max_size 0 and
   // no points: no bound).
@@ -66,8 +75,9 @@ struct ImproveStats {
   std::int64_t tetrahedra_before = 0, tetrahedra_after = 0, vertices_before = 0, vertices_after = 0;
   std::int64_t collapses = 0, passes = 0;
   double worst_aspect_before = 0, worst_aspect_after = 0, seconds = 0;
-  // Vertices moved by smoothing (each counted once per round); flips done (2-3 and 3-2).
-  std::int64_t smoothed = 0, flips = 0;
+  // Vertices moved by smoothing (each counted once per round); flips done (2-3 and edge removals), of
+  // which boundary_flips changed boundary triangles (edge removals inside a facet).
+  std::int64_t smoothed = 0, flips = 0, boundary_flips = 0;
   // Minimum dihedral angle (degrees) of the input mesh, after the first round's collapses, and at the end.
   double min_dihedral_before = 0, min_dihedral_collapsed = 0, min_dihedral_after = 0;
 };

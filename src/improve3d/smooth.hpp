@@ -68,7 +68,7 @@ std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& me
 
 class Smoother {
  public:
-  // mesh: after measure_dihedrals(); mobility: vertex_mobility's, or empty (nothing moves).
+  // mobility: vertex_mobility's, or empty (nothing moves).
   Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const SizeBound& size, double aspect_cap);
 
   // One pass (see above); returns the number of vertices moved.

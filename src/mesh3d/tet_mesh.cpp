@@ -126,6 +126,7 @@ void improve(const Domain3& domain, const TetMeshOptions& options, Construction&
   improve3d::ImproveOptions io;
   io.aspect_cap = c.review.max_aspect;
   io.target_aspect = options.target_aspect;
+  io.min_dihedral = options.min_dihedral;
   io.max_size = options.max_size;
   io.size_points = options.size_field.points;
   io.sizes = options.size_field.sizes;
@@ -133,6 +134,7 @@ void improve(const Domain3& domain, const TetMeshOptions& options, Construction&
   s.collapses = is.collapses;
   s.smoothed = is.smoothed;
   s.flips = is.flips;
+  s.boundary_flips = is.boundary_flips;
   s.seconds_improve = is.seconds;
   s.max_aspect = is.worst_aspect_after;
   const CheckReport check = check_mesh(c.result.mesh, domain);

@@ -110,6 +110,42 @@ TEST(RandomCoarsening, EveryRunSeedsValidFewerTetrahedraWithinTheConstructionsAs
   }
 }
 
+// Edge removal inside facets happens on the corpus (cube_cavity's and
+// tuning_fork's facets are axis-aligned), and each coarsened mesh still
+// passes the checker with the same area per marker (expect_coarsened).
+TEST(BoundaryFlips, MadeOnAxisAlignedFacetsAndTheMeshStaysValid) {
+  std::int64_t boundary_flips = 0;
+  for (const char* name : {"cube_cavity.poly", "tuning_fork.poly", "cube_through_hole.poly"}) {
+    const Domain3 d = corpus(name);
+    const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
+    ASSERT_TRUE(check_mesh(r.mesh, d).valid()) << name;
+    boundary_flips += expect_coarsened(name, d, r.mesh).stats.boundary_flips;
+  }
+  EXPECT_GT(boundary_flips, 0);
+}
+
+// The quality target only refuses collapses: every check of expect_coarsened
+// holds with it (validity, the cap, areas, determinism).
+TEST(MinDihedralTarget, ValidWithinTheCapDeterministic) {
+  for (const double target : {15.0, 25.0}) {
+    ImproveOptions options;
+    options.min_dihedral = target;
+    for (const char* name : {"l_block.poly", "schoenhardt.poly", "cube_cavity.poly"}) {
+      const Domain3 d = corpus(name);
+      const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
+      ASSERT_TRUE(check_mesh(r.mesh, d).valid()) << name;
+      expect_coarsened(std::string(name) + " min dihedral " + std::to_string(target), d, r.mesh, options);
+    }
+    for (std::uint64_t seed = 0; seed < 6; ++seed) {
+      const Domain3 d = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
+      const TetMeshResult r = tet_mesh(d, test::construction_only(TetMeshOptions{}));
+      ASSERT_TRUE(check_mesh(r.mesh, d).valid()) << seed;
+      expect_coarsened("every-run seed " + std::to_string(seed) + " min dihedral " + std::to_string(target), d,
+                       r.mesh, options);
+    }
+  }
+}
+
 // With a size bound no new edge is longer than sqrt(3) max_size, so the
 // longest edge stays within max(the input's longest, sqrt(3) max_size).
 TEST(SizeBoundCoarsening, LongestEdgeWithinTheMaxSizeBound) {
