@@ -121,8 +121,9 @@ struct NoSteinerStats {
   double segment_bound = 0;
   // The fan bound: the smallest, over the input vertices V, of the largest
   // min angle a fan of triangles filling V's corner can have when its end
-  // spokes are V's two sides (radians; docs/algorithm/nosteiner2d.md "The fan
-  // bound"); it is <= alpha and <= pi/3.
+  // spokes are V's two sides, and when it must pass a vertex of dP closer to
+  // V than the side it starts from (radians; docs/algorithm/nosteiner2d.md
+  // "The fan bound"); it is <= alpha and <= pi/3.
   double fan_bound = 0;
   // min(pi/3, constant * g, alpha, segment_bound, fan_bound): no triangulation without
   // boundary Steiner points does better (alpha: every input vertex stays a

@@ -19,7 +19,8 @@
 // bracket returned). It is <= alpha and <= pi/3.
 //
 // Floating point throughout (a measurement like every angle of the module).
-// Cost: O(log(1/precision) log k) per vertex.
+// Cost: O(log(1/precision) log k) per vertex; the obstacle term adds one
+// bucket-grid query per (vertex, side) over the disk of the side's length.
 #include "pqmesh/domain.hpp"
 
 namespace pqmesh::detail {
@@ -29,9 +30,21 @@ namespace pqmesh::detail {
 // the true value within 1e-12 relative).
 double fan_bound(double alpha, double ratio);
 
+// The obstacle fan bound (docs/algorithm/nosteiner2d.md "The fan bound",
+// obstacles): the largest min angle a fan from a side of length L can have
+// when a point of dP lies in its corner at angle omega from that side and
+// distance r < L (ratio = L / r): some spoke or the far edge of the
+// triangle containing that direction passes within r, and the spoke ratios
+// up to there obey the same h_A. An upper bound within 1e-12 relative.
+double obstacle_fan_bound(double omega, double ratio);
+
 struct FanBound {
   double angle = 0;  // min over input vertices of fan_bound(alpha_V, R_V), radians
   int vertex = -1;   // the vertex realising it (first minimum, loop order)
+  // min over (V, side E at V, vertex q of dP in V's closed sector with |Vq| < |E|)
+  // of obstacle_fan_bound(angle from E to Vq, |E| / |Vq|), radians.
+  double obstacle_angle = 0;
+  int obstacle_vertex = -1, obstacle = -1;  // V and q realising it
 };
 
 // The smallest fan bound over the vertices of the domain's loops (alpha_V by

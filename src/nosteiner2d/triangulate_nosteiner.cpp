@@ -105,7 +105,8 @@ void record_bound(const Domain2& domain, NoSteinerStats& st) {
   st.g = bound.g;
   st.alpha = bound.vertex_term;
   st.segment_bound = detail::segment_bound(domain).angle;
-  st.fan_bound = detail::vertex_fan_bound(domain).angle;
+  const detail::FanBound fan = detail::vertex_fan_bound(domain);
+  st.fan_bound = std::min(fan.angle, fan.obstacle_angle);
   st.upper_bound = std::min({bound.upper_bound(), bound.vertex_term, st.segment_bound, st.fan_bound});  // NoSteinerStats::upper_bound
   st.seconds_bound = since(t);
 }
