@@ -17,7 +17,12 @@
 //     clamp(floor(alpha_V / A), 1, 64) equal angles whose spoke lengths grow
 //     geometrically from one side's length to the other's (the equal split
 //     the bound's proof shows best). Each is kept when locate() puts it
-//     strictly inside P (exact), at most 4096 located points in all.
+//     strictly inside P (exact).
+//   - Obstacle spokes (with `obstacles`): for each side E of V and vertex q of dP in V's closed
+//     sector with |Vq| < |E| whose obstacle fan bound A is below the target,
+//     the inner spoke ends of k = clamp(floor(omega / A), 1, 64) equal angles
+//     up to q's direction, lengths geometric from |E| to |Vq|; located too.
+//   At most 4096 located points in all.
 // Sorted and duplicates removed (a deterministic order: by x, then y).
 // Cost: the segment bound plus O(n) per located point.
 #include <vector>
@@ -27,6 +32,7 @@
 
 namespace pqmesh::detail {
 
-std::vector<Vec2> seed_points(const Domain2& domain, double target_degrees);
+// The segment apexes and fan spokes, and with `obstacles` the obstacle spokes too.
+std::vector<Vec2> seed_points(const Domain2& domain, double target_degrees, bool obstacles);
 
 }  // namespace pqmesh::detail

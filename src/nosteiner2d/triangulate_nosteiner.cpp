@@ -320,7 +320,8 @@ void try_refined_candidate(const Domain2& domain, const NoSteinerOptions& option
 
 // The refined candidates (options.refine_targets, in order; refined_candidate.hpp):
 // per target the plain one, then, when seed_points gives any, the seeded
-// one, each through try_refined_candidate.
+// one, then the one seeded with the obstacle spokes too when they add
+// points, each through try_refined_candidate.
 void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& options, TriMesh2& mesh, double& best,
                             NoSteinerStats& st) {
   const auto t = Clock::now();
@@ -328,10 +329,13 @@ void try_refined_candidates(const Domain2& domain, const NoSteinerOptions& optio
       options.refine_max_points != 0 ? options.refine_max_points : detail::refined_point_cap(domain);
   bool any = false;
   for (const double target : options.refine_targets) {
-    const std::vector<Vec2> seeds = detail::seed_points(domain, target);
-    for (int seeded = 0; seeded < (seeds.empty() ? 1 : 2); ++seeded)
-      try_refined_candidate(domain, options, detail::refined_candidate(domain, target, cap, seeded ? seeds : std::vector<Vec2>{}),
-                            mesh, best, any, st);
+    try_refined_candidate(domain, options, detail::refined_candidate(domain, target, cap), mesh, best, any, st);
+    const std::vector<Vec2> seeds = detail::seed_points(domain, target, false);
+    if (!seeds.empty())
+      try_refined_candidate(domain, options, detail::refined_candidate(domain, target, cap, seeds), mesh, best, any, st);
+    const std::vector<Vec2> more = detail::seed_points(domain, target, true);
+    if (more.size() > seeds.size())
+      try_refined_candidate(domain, options, detail::refined_candidate(domain, target, cap, more), mesh, best, any, st);
   }
   st.seconds_refine = since(t);
 }

@@ -99,9 +99,9 @@ TEST(RefinedCandidate, RandomPolygonsWithHoles) {
 // A seeded candidate (seed_points.hpp): valid without boundary Steiner
 // points, the input vertices first and unchanged, then the seeds in order,
 // every seed strictly inside P (exact locate). Returns the number of seeds.
-std::size_t check_seeded(const Domain2& d, const std::string& what, double target) {
-  SCOPED_TRACE(what + ", seeded, target " + std::to_string(target));
-  const std::vector<Vec2> seeds = detail::seed_points(d, target);
+std::size_t check_seeded(const Domain2& d, const std::string& what, double target, bool obstacles) {
+  SCOPED_TRACE(what + ", seeded, target " + std::to_string(target) + (obstacles ? ", obstacle spokes" : ""));
+  const std::vector<Vec2> seeds = detail::seed_points(d, target, obstacles);
   for (const Vec2 p : seeds) EXPECT_EQ(locate(d, p), Location::Inside) << p.x << " " << p.y;
   if (seeds.empty()) return 0;
   const detail::RefinedCandidate c = detail::refined_candidate(d, target, detail::refined_point_cap(d), seeds);
@@ -116,13 +116,18 @@ std::size_t check_seeded(const Domain2& d, const std::string& what, double targe
 
 TEST(SeededCandidate, CorpusHardCasesAndRandomPolygons) {
   std::size_t inputs_with_seeds = 0;
-  for (const double target : {20.0, 30.0}) {
-    for (const char* name : test::kCorpus2d) inputs_with_seeds += check_seeded(test::corpus_domain(name), name, target) > 0;
-    for (const test::NamedDomain& c : test::hard_case_domains()) inputs_with_seeds += check_seeded(c.domain, c.name, target) > 0;
-    for (std::uint64_t seed = 1; seed <= 100; ++seed)
-      inputs_with_seeds += check_seeded(make_domain(test::random_polygon_with_holes(seed)), test::describe_polygon(seed), target) > 0;
-  }
-  std::printf("  seeded candidates made on %zu of %d (input, target) pairs\n", inputs_with_seeds, 2 * (8 + 9 + 100));
+  for (const bool obstacles : {false, true})
+    for (const double target : {20.0, 30.0}) {
+      for (const char* name : test::kCorpus2d)
+        inputs_with_seeds += check_seeded(test::corpus_domain(name), name, target, obstacles) > 0;
+      for (const test::NamedDomain& c : test::hard_case_domains())
+        inputs_with_seeds += check_seeded(c.domain, c.name, target, obstacles) > 0;
+      for (std::uint64_t seed = 1; seed <= 100; ++seed)
+        inputs_with_seeds += check_seeded(make_domain(test::random_polygon_with_holes(seed)), test::describe_polygon(seed),
+                                          target, obstacles) > 0;
+    }
+  std::printf("  seeded candidates made on %zu of %d (input, target, obstacle spokes) triples\n", inputs_with_seeds,
+              4 * (8 + 9 + 100));
   EXPECT_GT(inputs_with_seeds, 0u);
 }
 
