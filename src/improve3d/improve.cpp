@@ -244,9 +244,10 @@ std::int64_t collapse_passes(Coarsener& coarsener, Collapser& collapser, Improve
 // moved plus the flips done.
 std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const detail::VertexClasses& classes,
                              const detail::SizeBound& size, const ImproveOptions& options, ImproveStats& stats) {
-  std::vector<std::int8_t> mobility;
+  detail::VertexMobility mobility;
   if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
-  detail::Smoother smoother(work, std::move(mobility), size, options.aspect_cap);
+  detail::BoundarySnap snap(domain);
+  detail::Smoother smoother(work, std::move(mobility), &snap, size, options.aspect_cap);
   detail::Flipper flipper(work, size, options.aspect_cap);
   std::int64_t flips = 0;
   for (int round = 0; round < kMaxRounds; ++round) {

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <utility>
 
 #include "pqmesh/quality.hpp"
@@ -17,14 +18,19 @@ namespace {
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 // Mobility codes (vertex_mobility): -1 fixed; 0..2 in the plane where that
-// axis's coordinate is fixed; kFree anywhere; kAlongAxis + k only along axis k.
+// axis's coordinate is fixed; kFree anywhere; kAlongAxis + k only along axis k;
+// kOnSlantedFacet / kOnSlantedEdge settled onto their feature.
 constexpr int kFree = 3;
 constexpr int kAlongAxis = 4;
+constexpr int kOnSlantedFacet = 7;
+constexpr int kOnSlantedEdge = 8;
+
+bool slanted(int mobility) { return mobility >= kOnSlantedFacet; }
 
 bool moves_along(int mobility, int axis) {
   if (mobility < 0) return false;
   if (mobility < kFree) return axis != mobility;
-  if (mobility == kFree) return true;
+  if (mobility == kFree || slanted(mobility)) return true;
   return axis == mobility - kAlongAxis;
 }
 
@@ -65,6 +71,18 @@ int edge_axis(const Domain3& domain, int f, int g, Vec3 p) {
   return -1;
 }
 
+// The domain edge with facets {f, g} within an ulp of which p lies (exact), or -1.
+int slanted_edge(const Domain3& domain, int f, int g, Vec3 p) {
+  for (std::size_t e = 0; e < domain.edges.size(); ++e) {
+    const DomainEdge& edge = domain.edges[e];
+    const bool pair = (edge.facets[0] == f && edge.facets[1] == g) || (edge.facets[0] == g && edge.facets[1] == f);
+    if (pair && within_ulp_of_segment(p, domain.plc.vertices[static_cast<std::size_t>(edge.a)],
+                                      domain.plc.vertices[static_cast<std::size_t>(edge.b)]))
+      return static_cast<int>(e);
+  }
+  return -1;
+}
+
 std::array<Vec3, 4> corners(const CollapseMesh& mesh, const std::array<int, 4>& k, int v, Vec3 q) {
   std::array<Vec3, 4> p{};
   for (std::size_t i = 0; i < 4; ++i) p[i] = k[i] == v ? q : mesh.point(k[i]);
@@ -87,39 +105,52 @@ constexpr std::array<double, 5> kAscentSteps = {0.1, 0.05, 0.025, 0.0125, 0.0062
 
 }  // namespace
 
-std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes) {
+VertexMobility vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes) {
   std::vector<int> axis(domain.plc.facets.size());
   for (std::size_t f = 0; f < axis.size(); ++f) axis[f] = facet_axis(domain, domain.plc.facets[f]);
-  std::vector<std::int8_t> mobility(static_cast<std::size_t>(mesh.vertex_count()), -1);
+  VertexMobility mobility{std::vector<std::int8_t>(static_cast<std::size_t>(mesh.vertex_count()), -1),
+                          std::vector<int>(static_cast<std::size_t>(mesh.vertex_count()), -1)};
   std::vector<int> faces;
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     if (!mesh.vertex_alive(v)) continue;
     faces.clear();
     mesh.faces_of(v, faces);
-    std::int8_t& m = mobility[static_cast<std::size_t>(v)];
+    std::int8_t& m = mobility.code[static_cast<std::size_t>(v)];
+    int& feature = mobility.feature[static_cast<std::size_t>(v)];
     if (classes.of(v) == VertexClass::Interior) {
       if (faces.empty()) m = kFree;
     } else if (classes.of(v) == VertexClass::Facet && !faces.empty()) {
       const int f = classes.facets_of(v)[0];
       const bool one_facet =
           std::all_of(faces.begin(), faces.end(), [&](int b) { return mesh.face_facet(b) == f; });
-      if (one_facet && axis[static_cast<std::size_t>(f)] >= 0)
-        m = static_cast<std::int8_t>(axis[static_cast<std::size_t>(f)]);
+      if (one_facet) {
+        const int a = axis[static_cast<std::size_t>(f)];
+        m = static_cast<std::int8_t>(a >= 0 ? a : kOnSlantedFacet);
+        feature = a >= 0 ? -1 : f;
+      }
     } else if (classes.of(v) == VertexClass::Edge && classes.facets_of(v).size() == 2) {
-      const int along = edge_axis(domain, classes.facets_of(v)[0], classes.facets_of(v)[1], mesh.point(v));
-      if (along >= 0) m = static_cast<std::int8_t>(kAlongAxis + along);
+      const int f = classes.facets_of(v)[0], g = classes.facets_of(v)[1];
+      const int along = edge_axis(domain, f, g, mesh.point(v));
+      if (along >= 0) {
+        m = static_cast<std::int8_t>(kAlongAxis + along);
+      } else if ((feature = slanted_edge(domain, f, g, mesh.point(v))) >= 0) {
+        m = kOnSlantedEdge;
+      }
     }
   }
   return mobility;
 }
 
-Smoother::Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const SizeBound& size, double aspect_cap)
-    : mesh_(mesh), mobility_(std::move(mobility)), size_(size), cap_(aspect_cap),
+Smoother::Smoother(CollapseMesh& mesh, VertexMobility mobility, BoundarySnap* snap, const SizeBound& size,
+                   double aspect_cap)
+    : mesh_(mesh), mobility_(std::move(mobility.code)), feature_(std::move(mobility.feature)), snap_(snap),
+      size_(size), cap_(aspect_cap),
       changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       tried_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       moved_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       marks_(static_cast<std::size_t>(mesh.vertex_count()), 0) {
   mobility_.resize(static_cast<std::size_t>(mesh.vertex_count()), -1);  // none given: nothing moves
+  feature_.resize(mobility_.size(), -1);
 }
 
 double Smoother::star_min_dihedral(int v) {
@@ -164,7 +195,7 @@ void Smoother::touched(const std::vector<int>& tets) {
 // The quality of the star of v with v at q; false when a tetrahedron is not
 // positive or the star's worst aspect ratio exceeds `trial.worst_aspect` (the limit on entry).
 bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect,
-                        std::vector<double>& dihedral) const {
+                        std::vector<double>& dihedral) {
   const double limit = trial.worst_aspect;
   trial.q = q;
   trial.worst_aspect = 0;
@@ -175,6 +206,7 @@ bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
     if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
   }
+  if (slanted(mobility_[static_cast<std::size_t>(v)]) && !fan_keeps_orientation(v, mesh_.point(v), q)) return false;
   for (const int t : star_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
     const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
@@ -184,6 +216,39 @@ bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect
     aspect.push_back(tq.aspect_ratio);
     dihedral.push_back(tq.min_dihedral_deg);
   }
+  return true;
+}
+
+// Each boundary triangle of v (faces_, gathered by try_vertex) has the same
+// nonzero orientation with v at q as at p, in the projection dropping its
+// facet's dominant normal axis (exact).
+bool Smoother::fan_keeps_orientation(int v, Vec3 p, Vec3 q) {
+  for (const int f : faces_) {
+    const std::array<int, 3>& k = mesh_.face(f);
+    std::array<Vec3, 3> before{}, after{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      before[i] = k[i] == v ? p : mesh_.point(k[i]);
+      after[i] = k[i] == v ? q : mesh_.point(k[i]);
+    }
+    const int drop = snap_->drop_axis(mesh_.face_facet(f));
+    const Sign s = orient2d_projected(after[0], after[1], after[2], drop);
+    if (s == Sign::Zero || s != orient2d_projected(before[0], before[1], before[2], drop)) return false;
+  }
+  return true;
+}
+
+// q made a place v may take: the pinned coordinates kept (axis-aligned
+// features), or settled onto v's slanted facet or edge; false when that fails.
+bool Smoother::place(int v, Vec3 p, Vec3& q) {
+  const int code = mobility_[static_cast<std::size_t>(v)];
+  if (!slanted(code)) {
+    pin(q, p, code);
+    return true;
+  }
+  const int feature = feature_[static_cast<std::size_t>(v)];
+  const std::optional<Vec3> placed = code == kOnSlantedFacet ? snap_->onto_facet(feature, q) : snap_->onto_edge(feature, q);
+  if (!placed) return false;
+  q = *placed;
   return true;
 }
 
@@ -267,8 +332,7 @@ bool Smoother::try_vertex(int v) {
     count = static_cast<double>(faces_.size());
   }
   if (count == 0) return false;
-  Vec3 mean = (1.0 / count) * sum;
-  pin(mean, p, fixed);
+  const Vec3 mean = (1.0 / count) * sum;
   const double mean_edge = edge_sum / static_cast<double>(neighbours_.size());
 
   std::array<Vec3, 3 + kAscentSteps.size()> candidates{};
@@ -276,14 +340,16 @@ bool Smoother::try_vertex(int v) {
   candidates[1] = p + 0.5 * (mean - p);
   candidates[2] = p + 0.25 * (mean - p);
   for (std::size_t i = 0; i < kAscentSteps.size(); ++i) candidates[3 + i] = ascent(v, worst_tet, kAscentSteps[i] * mean_edge);
-  for (Vec3& c : candidates)
-    pin(c, p, fixed);  // bit-identical on the facet's plane or the edge's line
+  std::array<bool, candidates.size()> placed{};
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    placed[i] = place(v, p, candidates[i]);  // on the facet's plane or the edge's line
 
   const double limit = std::min(old_worst, cap_);
   Trial best{p, 0, old_min + kMinDihedralGain};
   bool found = false;
-  for (const Vec3& q : candidates) {
-    if (q == p) continue;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Vec3 q = candidates[i];
+    if (!placed[i] || q == p) continue;
     Trial trial{q, limit, 0};
     if (!evaluate(v, q, trial, aspect_, dihedral_)) continue;
     if (!(trial.min_dihedral >= best.min_dihedral) || (found && trial.min_dihedral == best.min_dihedral)) continue;

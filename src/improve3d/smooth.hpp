@@ -17,8 +17,14 @@
 //     coordinates bit for bit, and so does the vertex) only along that axis:
 //     it stays exactly on the edge's line, so on both facets' planes, and its
 //     boundary triangles on either facet keep their orientation as above;
-//   * vertices on other input edges, input vertices and vertices on a slanted
-//     facet never (a constructed point would leave the facet's plane).
+//   * a vertex inside exactly one slanted facet, or on a slanted input edge,
+//     to candidates settled onto the facet's plane or the edge
+//     (boundary_snap.hpp: within an ulp, the checker's rule); such a move is
+//     accepted only if each of the vertex's boundary triangles keeps its
+//     orientation, nonzero, in the projection dropping its facet's dominant
+//     normal axis (exact orient2d_projected): the triangles around the
+//     vertex then still tile the same polygon of each facet;
+//   * input vertices never.
 // A vertex whose star carries more than one region marker stays.
 //
 // A move of v to q is accepted only when
@@ -45,6 +51,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "improve3d/boundary_snap.hpp"
 #include "improve3d/collapse_mesh.hpp"
 #include "improve3d/size_bound.hpp"
 #include "improve3d/vertex_classes.hpp"
@@ -63,13 +70,19 @@ inline constexpr double kMinDihedralGain = 0.01;
 // small test models reach a few degrees more at 25 than at 20).
 inline constexpr double kWorkBelowDihedral = 25;
 
-// Per vertex: -1 fixed, 3 free, 0..2 moves within the plane where that coordinate is constant.
-std::vector<std::int8_t> vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes);
+// Per vertex: code -1 fixed, 0..2 moves within the plane where that coordinate is constant, 3 free,
+// 4..6 along the axis code - 4, 7 on the slanted facet `feature`, 8 on the slanted domain edge `feature`.
+struct VertexMobility {
+  std::vector<std::int8_t> code;
+  std::vector<int> feature;
+};
+VertexMobility vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes);
 
 class Smoother {
  public:
-  // mobility: vertex_mobility's, or empty (nothing moves).
-  Smoother(CollapseMesh& mesh, std::vector<std::int8_t> mobility, const SizeBound& size, double aspect_cap);
+  // mobility: vertex_mobility's, or empty (nothing moves); snap: for the slanted codes (may be
+  // null when there are none).
+  Smoother(CollapseMesh& mesh, VertexMobility mobility, BoundarySnap* snap, const SizeBound& size, double aspect_cap);
 
   // One pass (see above); returns the number of vertices moved.
   std::int64_t pass();
@@ -83,13 +96,17 @@ class Smoother {
     Vec3 q;
     double worst_aspect = 0, min_dihedral = 0;
   };
-  bool evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect, std::vector<double>& dihedral) const;
+  bool evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect, std::vector<double>& dihedral);
+  bool place(int v, Vec3 p, Vec3& q);
+  bool fan_keeps_orientation(int v, Vec3 p, Vec3 q);
   bool within_size(int v, Vec3 p, Vec3 q) const;
   double star_min_dihedral(int v);
   Vec3 ascent(int v, int worst_tet, double step) const;
 
   CollapseMesh& mesh_;
   std::vector<std::int8_t> mobility_;
+  std::vector<int> feature_;
+  BoundarySnap* snap_;
   const SizeBound& size_;
   double cap_;
   std::vector<std::int64_t> changed_at_, tried_at_;
