@@ -114,6 +114,18 @@ def test_improve_coarsens_within_the_constructions_worst():
         pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, target_aspect=2)
 
 
+def test_min_dihedral_target_keeps_the_guarantee():
+    construction = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS, improve=False)
+    for target in (15.0, 25.0):
+        mesh = pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, facet_markers=CUBE_MARKERS, min_dihedral=target)
+        assert_valid(mesh)
+        assert mesh.max_aspect_ratio <= construction.max_aspect_ratio
+        assert "boundary_flips" in mesh.stats
+    for bad in (-1.0, 71.0):
+        with pytest.raises(ValueError):
+            pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, min_dihedral=bad)
+
+
 def test_cavity():
     points, facets = cube_with_cavity()
     mesh = pqmesh.tetrahedralize(points, facets, holes=[(2, 2, 2)], aligned_grid=True)

@@ -98,6 +98,16 @@ expect 2 "3D mesh to an unknown extension" -- "$pqmesh" mesh "$data/3d/cube.poly
 expect 64 "2D mesh --aligned-grid" -- "$pqmesh" mesh "$data/2d/square.poly" -o "$work/never2d.vtu" --aligned-grid
 absent "$work/never.vtu" "no output after a refused command line"
 
+# --min-dihedral: the improve line names the target and the counted boundary
+# flips; the mesh is checked; out-of-range values are refused with nothing written.
+expect 0 "mesh l_block --min-dihedral 20" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md.vtu" --min-dihedral 20
+contains "$work/out" "^improve .*min dihedral 20 deg.*flips \([0-9]+ on the boundary\)" "--min-dihedral in the improve line"
+expect 0 "check --min-dihedral mesh" -- "$pqmesh" check "$work/md.vtu" --domain "$data/3d/l_block.poly"
+for bad in 0 70.6 x; do
+  expect 64 "--min-dihedral $bad refused" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md_bad.vtu" --min-dihedral "$bad"
+  absent "$work/md_bad.vtu" "--min-dihedral $bad writes nothing"
+done
+
 # pqmesh octree --generic-grid: the grid line.
 expect 0 "octree --generic-grid" -- "$pqmesh" octree "$data/3d/cube.poly" -o "$work/oct.vtu" --generic-grid
 contains "$work/out" "^grid +generic, planes shifted by" "octree --generic-grid line"
