@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "nosteiner2d/face_grid.hpp"
+#include "nosteiner2d/sector_obstacles.hpp"
 #include "nosteiner2d/spiral_frame.hpp"
 
 namespace pqmesh::detail {
@@ -88,7 +89,6 @@ FanBound vertex_fan_bound(const Domain2& domain) {
   FanBound out;
   out.angle = std::numbers::pi / 3;
   out.obstacle_angle = std::numbers::pi / 3;
-  const auto& P = domain.pslg.vertices;
   const FaceGrid grid(domain);
   std::vector<int> side_ids, vertex_ids;
   for (int l = 0; l < static_cast<int>(domain.loops.size()); ++l) {
@@ -102,16 +102,11 @@ FanBound vertex_fan_bound(const Domain2& domain) {
       // (both frames: the fan from either side).
       for (const bool ccw : {true, false}) {
         const SpiralFrame e = make_frame(domain, l, k, ccw);
-        grid.query(e.V, e.length, side_ids, vertex_ids);
-        for (const int vi : vertex_ids) {
-          const int q = grid.vertices()[static_cast<std::size_t>(vi)];
-          if (q == e.v || q == e.u) continue;
-          const Vec2 Q = P[static_cast<std::size_t>(q)];
-          const double r = norm(Q - e.V);
-          if (!(r < e.length) || !e.in_sector(Q)) continue;
+        for_each_sector_obstacle(domain, grid, e, side_ids, vertex_ids, [&](int q, Vec2 Q, double r) {
           const double b = obstacle_fan_bound(e.phi(Q), e.length / r);
           if (b < out.obstacle_angle) out.obstacle_angle = b, out.obstacle_vertex = e.v, out.obstacle = q;
-        }
+          return true;
+        });
       }
     }
   }

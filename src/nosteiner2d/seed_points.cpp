@@ -7,6 +7,7 @@
 
 #include "nosteiner2d/face_grid.hpp"
 #include "nosteiner2d/fan_bound.hpp"
+#include "nosteiner2d/sector_obstacles.hpp"
 #include "nosteiner2d/segment_bound.hpp"
 #include "nosteiner2d/spiral_frame.hpp"
 #include "predicates/predicates.hpp"
@@ -40,29 +41,24 @@ void segment_apexes(const Domain2& domain, double target, std::vector<Vec2>& out
 // sector closer than |E| whose obstacle fan bound A is below the target: k = clamp(floor(omega /
 // A), 1, 64) equal angles up to q's direction, lengths geometric from |E| to |Vq|. Each located.
 void obstacle_spokes(const Domain2& domain, double target, int& located, std::vector<Vec2>& out) {
-  const auto& P = domain.pslg.vertices;
   const FaceGrid grid(domain);
   std::vector<int> side_ids, vertex_ids;
   for (int l = 0; l < static_cast<int>(domain.loops.size()); ++l)
     for (int k = 0; k < static_cast<int>(domain.loops[static_cast<std::size_t>(l)].size()); ++k)
       for (const bool ccw : {true, false}) {
         const SpiralFrame e = make_frame(domain, l, k, ccw);
-        grid.query(e.V, e.length, side_ids, vertex_ids);
-        for (const int vi : vertex_ids) {
-          const int q = grid.vertices()[static_cast<std::size_t>(vi)];
-          if (q == e.v || q == e.u) continue;
-          const Vec2 Q = P[static_cast<std::size_t>(q)];
-          const double r = norm(Q - e.V);
-          if (!(r < e.length) || !e.in_sector(Q)) continue;
+        const bool all = for_each_sector_obstacle(domain, grid, e, side_ids, vertex_ids, [&](int, Vec2 Q, double r) {
           const double omega = e.phi(Q), a = obstacle_fan_bound(omega, e.length / r);
-          if (!(a < target)) continue;
+          if (!(a < target)) return true;
           const int steps = static_cast<int>(std::clamp(std::floor(omega / a), 1.0, 64.0));
           for (int i = 1; i < steps; ++i) {
-            if (located++ >= kMaxLocated) return;
+            if (located++ >= kMaxLocated) return false;
             const Vec2 p = e.point_at(e.length * std::pow(r / e.length, double(i) / steps), omega * i / steps);
             if (locate(domain, p) == Location::Inside) out.push_back(p);
           }
-        }
+          return true;
+        });
+        if (!all) return;
       }
 }
 
