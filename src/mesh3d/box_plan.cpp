@@ -37,7 +37,7 @@ BoxPlan plan_boxes(const mv3d::OctreeBuilder& builder) {
     ++plan.leaves_per_kind[static_cast<std::size_t>(cls.kind)];
     if (cls.kind == mv3d::LeafKind::Outside) continue;
     if (cls.kind == mv3d::LeafKind::EmptyInside) {
-      plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = -1});
+      plan.jobs.push_back(tet3d::BoxJob{.leaf = n, .facet = -1, .kind = tet3d::BoxKind::Empty});
       ++plan.empty_jobs;
       continue;
     }

@@ -83,7 +83,8 @@ struct PassNotes {
 BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                         std::span<const BoxJob> jobs, const BoxMeshOptions& options,
                         const detail::BoxMeshTestHooks& hooks, bool two_apex, PassNotes& notes) {
-  const BoxPass pass{tree, corners, domain, jobs, two_apex, hooks.facet_fans};
+  const EmptyCells empty_cells(tree, jobs);
+  const BoxPass pass{tree, corners, domain, jobs, two_apex, hooks.facet_fans, &empty_cells};
   WarpTable warps;
   std::int64_t rebuilds = 0, worst_box_rounds = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
@@ -222,6 +223,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     done = std::make_unique<BoxAssembler>(tree, corners, domain, options.warp ? &warps : nullptr);
     done->allow_two_apex(two_apex);
     done->allow_facet_fans(hooks.facet_fans);
+    done->set_empty_cells(&empty_cells);
     run_jobs(*done, tree, jobs);
     notes.wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }

@@ -83,6 +83,9 @@ struct BoxJob {
 
 struct FacetBoxStats {
   std::int64_t empty = 0, inside = 0, on_facet = 0, beyond = 0;  // boxes per case
+  // Empty boxes made of six Kuhn tetrahedra, and Kuhn faces (cut by one
+  // diagonal) counted once per asking empty box (empty_box.cpp).
+  std::int64_t empty_kuhn = 0, kuhn_faces = 0;
   std::int64_t edge = 0, vertex = 0, two_facet = 0;              // boxes of the other kinds
   std::int64_t edge_apex_moved = 0;     // edge boxes whose apex is not E's midpoint (edge_box.cpp apex_on_edge)
   std::int64_t edge_two_apex = 0;       // edge boxes coned from v on E and a second point (edge_box.cpp two_apex_box)

@@ -1,4 +1,4 @@
-// BoxAssembler: empty boxes (§4.5.1), checked tetrahedra, reports for the rebuild loop.
+// BoxAssembler: checked tetrahedra, reports for the rebuild loop, shared helpers.
 #include "tet3d/boxes/box_assembler.hpp"
 
 #include <algorithm>
@@ -11,16 +11,6 @@
 #include "tet3d/warp/warp.hpp"
 
 namespace pqmesh::tet3d {
-
-void BoxAssembler::empty_box(std::int32_t leaf) {
-  const BoxKey<3>& key = tree_.key(leaf);
-  std::vector<GridTriangle> tris;
-  for (int axis = 0; axis < 3; ++axis)
-    for (const bool upper : {false, true}) triangulate_box_face(key, axis, upper, corners_, tris);
-  const int c = centre_vertex(key_centre(key));
-  for (const GridTriangle& t : tris) cone(leaf, {grid(t[0]), grid(t[1]), grid(t[2])}, c);
-  ++out_.stats.empty;
-}
 
 // The largest tet_shape over the tetrahedra made so far (+infinity for one
 // flat in floating point).

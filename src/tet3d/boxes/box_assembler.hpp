@@ -3,8 +3,9 @@
 // every box job, on one point book and one square dispatcher, so that two
 // boxes sharing a square build the same vertices and triangles. Each box
 // kind is made in its own file:
-//   box_assembler.cpp   empty boxes (§4.5.1), tetrahedra checked by exact
-//                       orient3d, the rebuild loop's reports, shared helpers
+//   empty_box.cpp       empty boxes (§4.5.1), Kuhn faces and Kuhn boxes
+//   box_assembler.cpp   tetrahedra checked by exact orient3d, the rebuild
+//                       loop's reports, shared helpers
 //   facet_box.cpp       facet boxes (§4.5.4) and their prisms
 //   facet_polygon.cpp   the polygon F ∩ b, its central points and its fan
 //   edge_box.cpp        edge boxes (§4.5.3), the apex on E, two cone points
@@ -21,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "tet3d/boxes/empty_cells.hpp"
 #include "tet3d/facet_boxes.hpp"
 #include "tet3d/points/facet_plane.hpp"
 #include "tet3d/points/point_book.hpp"
@@ -42,6 +44,11 @@ class BoxAssembler {
   void vertex_box(std::int32_t leaf, int vertex, std::uint8_t block);
   void two_facet_box(std::int32_t leaf, int edge);
 
+  // The empty boxes of the whole run (every pass of one run gets the same
+  // set): faces between two empty boxes of one size may be cut by their Kuhn
+  // diagonal (empty_box.cpp). Without it every empty box is coned from its
+  // centre over four triangles per square.
+  void set_empty_cells(const EmptyCells* cells) { empty_cells_ = cells; }
   void set_job(std::size_t j, const BoxJob& job) {
     job_ = static_cast<std::int32_t>(j);
     job_box_ = job;
@@ -76,6 +83,10 @@ class BoxAssembler {
 
  private:
   using Tri = std::array<int, 3>;
+
+  // Empty boxes (empty_box.cpp).
+  bool kuhn_face(const BoxKey<3>& key, int axis, bool upper) const;
+  void kuhn_box(std::int32_t leaf, const BoxKey<3>& key);
   // The boundary of F ∩ b: (smaller id, larger id) -> the edge as directed
   // in its face triangle (chords in facet_polygon.cpp).
   using Chords = std::map<std::pair<int, int>, std::pair<int, int>>;
@@ -168,6 +179,7 @@ class BoxAssembler {
   const CornerSet& corners_;
   const Domain3& domain_;
   const WarpTable* warps_;
+  const EmptyCells* empty_cells_ = nullptr;
   std::int32_t job_ = -1;
   BoxJob job_box_;
   bool collect_ = false;

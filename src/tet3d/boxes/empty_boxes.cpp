@@ -53,23 +53,30 @@ std::vector<std::int32_t> empty_leaves(const mv3d::OctreeBuilder& builder, bool 
 
 namespace {
 
+// Jobs of kind Empty for the leaves `empty` marks (their faces may be Kuhn
+// faces, empty_box.cpp), FromFacet with no facet (coned from the centre
+// over every face's square fans) for the others: a flush leaf may have a P
+// facet on a face, whose flat edges the Kuhn diagonal could cross.
 BoxMesh mesh_as_empty(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                      std::span<const std::int32_t> leaves) {
+                      std::span<const std::int32_t> leaves, const std::vector<char>& empty) {
   std::vector<BoxJob> jobs;
   jobs.reserve(leaves.size());
-  for (const std::int32_t n : leaves) jobs.push_back({n, -1});
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+    jobs.push_back({leaves[i], -1, empty[i] ? BoxKind::Empty : BoxKind::FromFacet, -1, 0});
   return mesh_boxes(tree, corners, domain, jobs);
 }
 
 }  // namespace
 
 BoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves) {
-  return mesh_as_empty(builder.tree(), CornerSet(builder), builder.domain(), leaves);
+  std::vector<char> empty(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i) empty[i] = is_empty_inside(builder, leaves[i]) ? 1 : 0;
+  return mesh_as_empty(builder.tree(), CornerSet(builder), builder.domain(), leaves, empty);
 }
 
 BoxMesh mesh_empty_boxes(const OctTree& tree, const CornerSet& corners, std::span<const std::int32_t> leaves) {
   // Empty boxes never consult the domain (only facet boxes do).
-  return mesh_as_empty(tree, corners, Domain3{}, leaves);
+  return mesh_as_empty(tree, corners, Domain3{}, leaves, std::vector<char>(leaves.size(), 1));
 }
 
 }  // namespace pqmesh::tet3d

@@ -5,8 +5,11 @@
 // An empty box is a leaf whose closed cube lies in P with no P face crossing
 // its interior. Each is cut into tetrahedra by joining its centre (the
 // prewarped centroid, §4.5.1) to the triangles of its six faces
-// (box_faces.hpp). Since the face triangulations agree from both sides, the
-// tetrahedra of all empty boxes meet face to face.
+// (box_faces.hpp), or, when all six faces are Kuhn faces (shared with an
+// empty box of its size, no split point, no warped corner: empty_box.cpp),
+// into the six Kuhn tetrahedra of its main diagonal. Since the face
+// triangulations agree from both sides, the tetrahedra of all empty boxes
+// meet face to face.
 //
 // Vertices are identified by their GridPoint (box corner, face centre, box
 // centre; a VertexKey of kind Grid), never by coordinates; vertex ids are
@@ -46,8 +49,10 @@ bool is_flush_inside(const mv3d::OctreeBuilder& builder, std::int32_t n);
 std::vector<std::int32_t> empty_leaves(const mv3d::OctreeBuilder& builder, bool flush);
 
 // Tetrahedralizes the given leaves as empty boxes: mesh_boxes
-// (facet_boxes.hpp) with every job an empty box (facet -1), so the vertex
-// keys are all VertexKind::Grid. Each leaf must be an aligned leaf; the caller
+// (facet_boxes.hpp) with every job an empty box, so the vertex keys are all
+// VertexKind::Grid. With a builder, leaves that are flush but not
+// is_empty_inside keep every face's square fans (no Kuhn faces); on a bare
+// tree every leaf is an empty box. Each leaf must be an aligned leaf; the caller
 // is responsible for them being empty in the sense above. Face splits use the
 // corners of every leaf meeting P (box_faces.hpp CornerSet).
 BoxMesh mesh_empty_boxes(const mv3d::OctreeBuilder& builder, std::span<const std::int32_t> leaves);

@@ -32,6 +32,7 @@ std::unique_ptr<BoxAssembler> trial_assembler(const BoxPass& pass, const WarpTab
   a->collect_bad();
   a->allow_two_apex(pass.two_apex);
   a->allow_facet_fans(pass.facet_fans);
+  a->set_empty_cells(pass.empty_cells);
   return a;
 }
 

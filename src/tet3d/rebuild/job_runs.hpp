@@ -19,6 +19,7 @@ struct BoxPass {
   std::span<const BoxJob> jobs;
   bool two_apex = false;   // BoxAssembler::allow_two_apex
   bool facet_fans = true;  // BoxAssembler::allow_facet_fans
+  const EmptyCells* empty_cells = nullptr;  // BoxAssembler::set_empty_cells
 };
 
 void run_jobs(BoxAssembler& a, const OctTree& tree, std::span<const BoxJob> jobs);

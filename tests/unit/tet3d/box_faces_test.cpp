@@ -84,6 +84,7 @@ OctTree random_tree(std::uint64_t seed, int splits, int max_level, bool balanced
 
 TEST(BoxFaces, RandomTreesTileTheRootCube) {
   int max_jump = 0;
+  std::int64_t kuhn_boxes = 0, kuhn_faces = 0;
   for (const bool balanced : {true, false}) {
     for (std::uint64_t seed = 1; seed <= 30; ++seed) {
       const OctTree t = random_tree(seed, 40, 6, balanced);
@@ -91,6 +92,8 @@ TEST(BoxFaces, RandomTreesTileTheRootCube) {
       for (const std::int32_t n : leaves)
         for (const std::int32_t m : t.neighbours(n)) max_jump = std::max(max_jump, t.level(m) - t.level(n));
       const BoxMesh m = mesh_empty_boxes(t, CornerSet(t, leaves), leaves);
+      kuhn_boxes += m.stats.empty_kuhn;
+      kuhn_faces += m.stats.kuhn_faces;
       const CheckReport r = check_mesh(m.mesh, make_domain(test::box()));
       ASSERT_TRUE(r.valid()) << "seed " << seed << (balanced ? " balanced\n" : " unbalanced\n") << r.to_text();
       // Vertex identity is the grid key: no two vertices share a key.
@@ -98,8 +101,11 @@ TEST(BoxFaces, RandomTreesTileTheRootCube) {
       for (const VertexKey& k : m.keys) ASSERT_EQ(k.kind, VertexKind::Grid);
     }
   }
-  // The unbalanced trees did contain neighbours more than one level apart.
+  // The unbalanced trees did contain neighbours more than one level apart,
+  // and the trees had Kuhn faces and Kuhn boxes (empty_box.cpp) next to them.
   EXPECT_GE(max_jump, 2);
+  EXPECT_GT(kuhn_faces, 0);
+  EXPECT_GT(kuhn_boxes, 0);
 }
 
 TEST(BoxFaces, OutputIsDeterministic) {
