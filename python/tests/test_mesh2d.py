@@ -113,7 +113,7 @@ def test_no_boundary_steiner_keeps_input_boundary_vertices():
     assert boundary_vertices == set(range(len(domain.points)))
     assert np.array_equal(mesh.points[: len(domain.points)], domain.points)
     assert mesh.min_angle <= mesh.upper_bound + 1e-9
-    assert mesh.path in ("full", "q-only", "cdt", "cdt-better")
+    assert mesh.path in ("full", "q-only", "cdt", "cdt-better", "refined")
     # The quadtree mesher, by contrast, adds boundary vertices here.
     quad = pqmesh.triangulate(domain, quadtree=True)
     assert_valid(quad)

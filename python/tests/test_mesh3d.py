@@ -97,7 +97,8 @@ def test_full_separation_builds_the_thesis_octree():
     assert not light.stats["separated"] and light.stats["separated_faces"] == 0
     assert light.stats["light_rejected"] == ""
     assert thesis.stats["separated"]
-    assert len(thesis.tetrahedra) > len(light.tetrahedra)
+    # The constructions differ; the improvement may coarsen both to the same few tetrahedra.
+    assert thesis.stats["constructed_tetrahedra"] > light.stats["constructed_tetrahedra"]
     assert light.max_aspect_ratio <= light.aspect_bound and thesis.max_aspect_ratio <= thesis.aspect_bound
 
 
