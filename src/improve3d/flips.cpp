@@ -54,7 +54,7 @@ bool Flipper::try_tet(int t) {
   }
   bool found = false;
   const auto consider = [&](bool possible) {
-    if (!possible || !measure(trial_)) return;
+    if (!possible || !gains(trial_)) return;
     if (found && !(trial_.min_dihedral > best_.min_dihedral)) return;
     std::swap(best_, trial_);
     found = true;
@@ -83,21 +83,22 @@ bool Flipper::edge_removal(int t, int i, int j, Flip& flip) {
   for (const int s : ring_.tets) old_worst = std::max(old_worst, mesh_.aspect(s));
   const double limit = std::min(old_worst, cap_);
   RingScores scores(m);
+  figures_.resize(static_cast<std::size_t>(m * m * m));
   for (int x = 0; x < m; ++x)
     for (int y = x + 1; y < m; ++y)
-      for (int z = y + 1; z < m; ++z) {
-        const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
-                  rz = r[static_cast<std::size_t>(z)];
-        scores.set(x, y, z, score({a, rx, ry, rz}, {rx, ry, rz, b}, limit));
-      }
+      for (int z = y + 1; z < m; ++z) scores.set(x, y, z, score(x, y, z, limit));
   if (best_ring_triangulation(scores, triangles_) == kForbidden) return false;
   flip.tets.clear();
+  flip.aspect.clear();
+  flip.dihedral.clear();
+  flip.min_dihedral = 180;
   int apex = -1;  // of the triangle on the side (r_0, r_m-1)
   for (const auto& [x, y, z] : triangles_) {
     const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
               rz = r[static_cast<std::size_t>(z)];
-    flip.tets.push_back({a, rx, ry, rz});
-    flip.tets.push_back({rx, ry, rz, b});
+    const auto& q = figures_[static_cast<std::size_t>((x * m + y) * m + z)];
+    take({a, rx, ry, rz}, q[0], flip);
+    take({rx, ry, rz, b}, q[1], flip);
     if (x == 0 && z == m - 1) apex = ry;
   }
   if (!ring_.closed) replacement_faces(apex, flip);
@@ -149,9 +150,19 @@ bool Flipper::face_flip(int t, int i, Flip& flip) {
   for (const int x : mesh_.tet(other))
     if (x != a && x != b && x != c) e = x;
   flip.old_tets = {t, other};
+  if (!one_region(flip.old_tets)) return false;
   flip.old_faces.clear();
   flip.faces.clear();
-  flip.tets = {{a, b, e, d}, {b, c, e, d}, {c, a, e, d}};
+  flip.tets.clear();
+  flip.aspect.clear();
+  flip.dihedral.clear();
+  flip.min_dihedral = 180;
+  const double limit = std::min(std::max(mesh_.aspect(t), mesh_.aspect(other)), cap_);
+  TetQuality q;
+  for (const std::array<int, 4>& k : {std::array<int, 4>{a, b, e, d}, {b, c, e, d}, {c, a, e, d}}) {
+    if (!admissible(k, limit, q)) return false;
+    take(k, q, flip);
+  }
   return true;
 }
 
@@ -167,44 +178,42 @@ bool Flipper::one_region(const std::vector<int>& tets) const {
   return std::all_of(tets.begin(), tets.end(), [&](int s) { return mesh_.tet_marker(s) == mesh_.tet_marker(tets[0]); });
 }
 
-// The score of a ring triangle: the smaller minimum dihedral angle of its two tetrahedra, or
-// kForbidden when one is not positive (exact), beyond the size bound, or above the aspect limit.
-double Flipper::score(const std::array<int, 4>& lower, const std::array<int, 4>& upper, double limit) const {
-  double least = 180;
-  for (const auto* k : {&lower, &upper}) {
-    const std::array<Vec3, 4> p = {mesh_.point((*k)[0]), mesh_.point((*k)[1]), mesh_.point((*k)[2]),
-                                   mesh_.point((*k)[3])};
-    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return kForbidden;
-    if (size_.bounded() && !size_.allows(p)) return kForbidden;
-    const TetQuality q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
-    if (!(q.aspect_ratio <= limit) || !(q.min_dihedral_deg == q.min_dihedral_deg)) return kForbidden;
-    least = std::min(least, q.min_dihedral_deg);
-  }
-  return least;
+// Rules 1, 3 and 4 of flips.hpp for one new tetrahedron k, its quality into q: positive (exact),
+// within the size bound, aspect ratio at most limit (NaN never passes).
+bool Flipper::admissible(const std::array<int, 4>& k, double limit, TetQuality& q) const {
+  const std::array<Vec3, 4> p = {mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])};
+  if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+  if (size_.bounded() && !size_.allows(p)) return false;
+  q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+  return q.aspect_ratio <= limit && q.min_dihedral_deg == q.min_dihedral_deg;
 }
 
-// Rules 1, 3, 4, 5 of flips.hpp and the region part of rule 2.
-bool Flipper::measure(Flip& flip) const {
-  double old_worst = 0, old_min = 180;
-  if (!one_region(flip.old_tets)) return false;
-  for (const int s : flip.old_tets) {
-    old_worst = std::max(old_worst, mesh_.aspect(s));
-    old_min = std::min(old_min, mesh_.dihedral(s));
-  }
-  const double limit = std::min(old_worst, cap_);
-  flip.aspect.clear();
-  flip.dihedral.clear();
-  flip.min_dihedral = 180;
-  for (const auto& k : flip.tets) {
-    const std::array<Vec3, 4> p = {mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])};
-    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
-    if (size_.bounded() && !size_.allows(p)) return false;
-    const TetQuality q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
-    if (!(q.aspect_ratio <= limit)) return false;  // NaN never passes
-    flip.aspect.push_back(q.aspect_ratio);
-    flip.dihedral.push_back(q.min_dihedral_deg);
-    flip.min_dihedral = std::min(flip.min_dihedral, q.min_dihedral_deg);
-  }
+// The score of ring triangle (x, y, z) of edge (a, b): the smaller minimum dihedral angle of its
+// tetrahedra (a, r_x, r_y, r_z) and (r_x, r_y, r_z, b), kept in figures_, or kForbidden when one
+// is not admissible.
+double Flipper::score(int x, int y, int z, double limit) {
+  const std::vector<int>& r = ring_.ring;
+  const int m = static_cast<int>(r.size());
+  const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
+            rz = r[static_cast<std::size_t>(z)];
+  auto& q = figures_[static_cast<std::size_t>((x * m + y) * m + z)];
+  if (!admissible({ring_.a, rx, ry, rz}, limit, q[0]) || !admissible({rx, ry, rz, ring_.b}, limit, q[1]))
+    return kForbidden;
+  return std::min(q[0].min_dihedral_deg, q[1].min_dihedral_deg);
+}
+
+// Appends new tetrahedron k with its measured quality q to the flip.
+void Flipper::take(const std::array<int, 4>& k, const TetQuality& q, Flip& flip) const {
+  flip.tets.push_back(k);
+  flip.aspect.push_back(q.aspect_ratio);
+  flip.dihedral.push_back(q.min_dihedral_deg);
+  flip.min_dihedral = std::min(flip.min_dihedral, q.min_dihedral_deg);
+}
+
+// Rule 5 of flips.hpp: the new tetrahedra's least minimum dihedral angle gains kMinDihedralGain.
+bool Flipper::gains(const Flip& flip) const {
+  double old_min = 180;
+  for (const int s : flip.old_tets) old_min = std::min(old_min, mesh_.dihedral(s));
   return flip.min_dihedral >= old_min + kMinDihedralGain;
 }
 

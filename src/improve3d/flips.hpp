@@ -38,8 +38,12 @@
 // its six edges and the 2-3 flips of its four faces, in that enumeration order, and
 // does the best accepted one (largest new minimum dihedral, ties: the first).
 // New tetrahedra and boundary triangles get new ids (collapse_mesh.hpp); new
-// tetrahedra wait for the next pass. Cost per tetrahedron visited: O(1)
-// ring gathers and kMaxRingVertices^3 quality evaluations at most.
+// tetrahedra wait for the next pass. Rules 1, 3 and 4 are decided once per
+// candidate tetrahedron: for an edge removal while scoring the ring's
+// triangles (each triangle's two tetrahedra, kept for the triangulation
+// chosen), for a 2-3 flip on its three tetrahedra. Cost per tetrahedron
+// visited: O(1) ring gathers and 2 * C(kMaxRingVertices, 3) quality
+// evaluations per edge at most.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -48,6 +52,7 @@
 #include "improve3d/edge_ring.hpp"
 #include "improve3d/ring_triangulation.hpp"
 #include "improve3d/size_bound.hpp"
+#include "pqmesh/quality.hpp"
 
 namespace pqmesh::improve3d::detail {
 
@@ -78,8 +83,10 @@ class Flipper {
   bool face_flip(int t, int i, Flip& flip);
   bool on_boundary(int a, int b, int c);
   bool one_region(const std::vector<int>& tets) const;
-  double score(const std::array<int, 4>& lower, const std::array<int, 4>& upper, double limit) const;
-  bool measure(Flip& flip) const;
+  bool admissible(const std::array<int, 4>& k, double limit, TetQuality& q) const;
+  double score(int x, int y, int z, double limit);
+  void take(const std::array<int, 4>& k, const TetQuality& q, Flip& flip) const;
+  bool gains(const Flip& flip) const;
   void apply(const Flip& flip);
 
   CollapseMesh& mesh_;
@@ -89,6 +96,8 @@ class Flipper {
   std::vector<int> faces_, created_;
   EdgeRing ring_;
   std::vector<std::array<int, 3>> triangles_;
+  // The two tetrahedra of each ring triangle (x, y, z) as score() measured them, at (x * m + y) * m + z.
+  std::vector<std::array<TetQuality, 2>> figures_;
   Flip best_, trial_;
   std::int64_t boundary_flips_ = 0;
 };
