@@ -31,7 +31,8 @@ struct Domain3 {
   std::vector<Shell> shells;                  // shells[0] is the exterior shell; the rest are floaters
   std::vector<Vec3> facet_normals;            // unit outward normal per facet (a construction, for reports)
   // Every facet triangulated without new vertices (facets may have holes);
-  // triangles are oriented outward like their facet.
+  // triangles are oriented outward like their facet and grouped by facet in
+  // increasing facet id, so facet_triangle_owner is non-decreasing.
   std::vector<std::array<int, 3>> facet_triangles;
   std::vector<int> facet_triangle_owner;      // facet id of each facet triangle
   double volume = 0;

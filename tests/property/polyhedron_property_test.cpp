@@ -148,6 +148,7 @@ TEST(PolyhedronProperty, DomainVolumeAlphaAndFacetTriangles) {
     double six_volume = 0;
     const Vec3 apex = V[0];
     ASSERT_EQ(d.facet_triangles.size(), d.facet_triangle_owner.size());
+    EXPECT_TRUE(std::is_sorted(d.facet_triangle_owner.begin(), d.facet_triangle_owner.end()));
     for (std::size_t t = 0; t < d.facet_triangles.size(); ++t) {
       const auto& T = d.facet_triangles[t];
       const int f = d.facet_triangle_owner[t];

@@ -136,6 +136,7 @@ TEST_P(Corpus3, ReadsValidatesAndMatchesCounts) {
   EXPECT_EQ(shell_facets, d.plc.facets.size());
   EXPECT_EQ(static_cast<int>(d.facet_triangles.size()), g.triangles);
   EXPECT_EQ(d.facet_triangle_owner.size(), d.facet_triangles.size());
+  EXPECT_TRUE(std::is_sorted(d.facet_triangle_owner.begin(), d.facet_triangle_owner.end()));
   EXPECT_EQ(d.facet_normals.size(), d.plc.facets.size());
   EXPECT_NEAR(d.volume, g.volume, 1e-12 * std::max(1.0, g.volume));
 

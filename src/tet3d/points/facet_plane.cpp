@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "plc/facet_triangle_range.hpp"
 #include "pqmesh/errors.hpp"
 
 namespace pqmesh::tet3d {
@@ -12,8 +13,7 @@ namespace {
 
 // The first facet triangle of `facet` (it spans the facet's plane).
 std::array<Vec3, 3> first_triangle(const Domain3& domain, int facet) {
-  for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
-    if (domain.facet_triangle_owner[t] != facet) continue;
+  for (const std::size_t t : pqmesh::detail::facet_triangle_range(domain, facet)) {
     const auto& tri = domain.facet_triangles[t];
     return {domain.plc.vertices[static_cast<std::size_t>(tri[0])],
             domain.plc.vertices[static_cast<std::size_t>(tri[1])],

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "plc/facet_triangle_range.hpp"
 #include "pqmesh/errors.hpp"
 #include "tet3d/squares/warped_crossing.hpp"
 
@@ -26,8 +27,7 @@ const DomainEdge& edge_of(const Domain3& d, int edge) {
 // The third vertex of a facet triangle of `facet` with side {a, b}: a point
 // of the facet's half-plane from the edge, next to the edge.
 Vec3 wing(const Domain3& d, int facet, int a, int b) {
-  for (std::size_t t = 0; t < d.facet_triangles.size(); ++t) {
-    if (d.facet_triangle_owner[t] != facet) continue;
+  for (const std::size_t t : pqmesh::detail::facet_triangle_range(d, facet)) {
     const auto& tri = d.facet_triangles[t];
     for (int k = 0; k < 3; ++k) {
       const int p = tri[static_cast<std::size_t>(k)], q = tri[static_cast<std::size_t>((k + 1) % 3)];

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "plc/facet_triangle_range.hpp"
 #include "tet3d/squares/cut_square_edge.hpp"
 #include "tet3d/points/facet_plane.hpp"
 
@@ -70,8 +71,7 @@ double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
 double facet_distance(const Domain3& domain, int facet, Vec3 x) {
   double best = INFINITY;
   const auto& pv = domain.plc.vertices;
-  for (std::size_t t = 0; t < domain.facet_triangles.size(); ++t) {
-    if (domain.facet_triangle_owner[t] != facet) continue;
+  for (const std::size_t t : pqmesh::detail::facet_triangle_range(domain, facet)) {
     const auto& tri = domain.facet_triangles[t];
     best = std::min(best, triangle_distance(x, pv[static_cast<std::size_t>(tri[0])], pv[static_cast<std::size_t>(tri[1])],
                                             pv[static_cast<std::size_t>(tri[2])]));
