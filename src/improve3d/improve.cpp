@@ -14,6 +14,7 @@
 #include "improve3d/collapse_retry.hpp"
 #include "improve3d/edge_queue.hpp"
 #include "improve3d/flips.hpp"
+#include "improve3d/improving_collapse.hpp"
 #include "improve3d/size_bound.hpp"
 #include "improve3d/smooth.hpp"
 #include "improve3d/vertex_classes.hpp"
@@ -48,6 +49,8 @@ constexpr int kMaxSmoothPasses = 6;
 // run ends after a round that flips nothing, or after kMaxRounds.
 constexpr int kMaxFlipPasses = 4;
 constexpr int kMaxRounds = 3;
+// Passes of collapses that remove the worst tetrahedra, before each of the last smoothing and flip rounds.
+constexpr int kMaxImprovingPasses = 4;
 
 struct PassResult {
   std::int64_t edges = 0, collapses = 0;
@@ -269,6 +272,19 @@ std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const de
   return smoother.moved_vertices() + flips;
 }
 
+// Passes of ImprovingCollapses (improving_collapse.hpp) until one collapses
+// nothing, at most kMaxImprovingPasses. Returns the collapses.
+std::int64_t improving_collapses(detail::ImprovingCollapses& improving, ImproveStats& stats) {
+  std::int64_t collapses = 0;
+  for (int pass = 0; pass < kMaxImprovingPasses; ++pass) {
+    const std::int64_t done = improving.pass();
+    if (done == 0) break;
+    collapses += done;
+  }
+  stats.collapses += collapses;
+  return collapses;
+}
+
 }  // namespace
 
 ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int>& face_facets,
@@ -287,6 +303,8 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   stats.worst_aspect_before = work.worst_aspect();
   stats.min_dihedral_before = work.min_dihedral();  // measured by the constructor
   Coarsener coarsener(work, classes, collapser);
+  Collapser strict(work, classes, size, {options.aspect_cap, options.target_aspect, 180}, memo);
+  detail::ImprovingCollapses improving(work, classes, strict);
   detail::StarChanges changes;
   std::vector<int> changed;
   std::vector<std::pair<int, int>> new_edges;
@@ -300,6 +318,11 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
     if (round > 0 && collapses == 0) break;
     changes.take(work);
     if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, stats) == 0) break;
+  }
+  // After the coarsening rounds, so no later collapse of the coarsening's rule follows them.
+  for (int round = 0; options.improving_collapses && round < kMaxRounds; ++round) {
+    if (improving_collapses(improving, stats) == 0) break;
+    if (options.smooth || options.flip) smooth_and_flip(domain, work, classes, size, options, stats);
   }
   stats.min_dihedral_after = work.min_dihedral();
   stats.tetrahedra_after = work.live_tets();

@@ -37,6 +37,12 @@
 // change a vertex, and change boundary triangles only by re-triangulating two
 // exactly coplanar ones of one facet). So the minimum dihedral angle never falls and
 // the worst aspect ratio never rises in these passes.
+//
+// Last, collapses that remove the worst tetrahedra (improving_collapse.hpp:
+// an edge of a tetrahedron below the work threshold, with rule 6 at
+// min_dihedral = 180, so where the region is within target_aspect no new
+// tetrahedron is worse in minimum dihedral angle than the region's least),
+// each batch followed by smoothing and flips, at most kMaxRounds times.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -66,6 +72,8 @@ struct ImproveOptions {
   // Vertex smoothing and flips after the collapses (see above).
   bool smooth = true;
   bool flip = true;
+  // Collapses that remove the worst tetrahedra after the rounds (see above); counted in collapses.
+  bool improving_collapses = true;
   // Rounds of (collapses, smoothing and flips); a round after the first runs
   // only when the one before collapsed something (and smoothed or flipped).
   int rounds = 3;

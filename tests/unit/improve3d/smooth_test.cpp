@@ -179,11 +179,27 @@ Moves expect_only_movable_moved(const Domain3& d, const Improved& collapsed, con
   return moves;
 }
 
+// The same run with the improving collapses after it (improving_collapse.hpp):
+// valid, no more tetrahedra, the worst aspect ratio within the cap, and its
+// boundary triangles on the same facets (a collapse removes boundary
+// triangles only with a vertex).
+void expect_improving_collapses(const std::string& what, const Domain3& d, const TetMesh3& mesh,
+                                const std::vector<int>& facets, ImproveOptions options, const Improved& without) {
+  options.improving_collapses = true;
+  const Improved with = run(d, mesh, facets, options);
+  const CheckReport report = check_mesh(with.mesh, d);
+  EXPECT_TRUE(report.valid()) << what << ": " << report.to_text();
+  EXPECT_LE(with.mesh.tetrahedra.size(), without.mesh.tetrahedra.size()) << what;
+  EXPECT_LE(with.stats.worst_aspect_after, options.aspect_cap) << what;
+  EXPECT_GE(with.stats.collapses, without.stats.collapses) << what;
+}
+
 Moves expect_better_than_collapses(const std::string& what, const Domain3& d, const TetMesh3& mesh,
                                    ImproveOptions options = {}) {
   const std::vector<int> facets = test::facets_of_faces(d, mesh);
   options.aspect_cap = test::figures(mesh).worst_aspect;
   options.rounds = 1;  // one round: the stages compare on the same collapses
+  options.improving_collapses = false;
   ImproveOptions only = options;
   only.smooth = false;
   only.flip = false;
@@ -218,6 +234,7 @@ Moves expect_better_than_collapses(const std::string& what, const Domain3& d, co
   expect_same_boundary(collapsed, full, what);
   const Moves moves = expect_only_movable_moved(d, collapsed, full, what);
   EXPECT_EQ(moves.interior + moves.on_facet + moves.on_edge, full.stats.smoothed) << what;
+  expect_improving_collapses(what, d, mesh, facets, options, full);
   const Improved again = run(d, mesh, facets, options);
   EXPECT_TRUE(again.mesh.vertices == full.mesh.vertices) << what;
   EXPECT_TRUE(again.mesh.tetrahedra == full.mesh.tetrahedra) << what;
