@@ -128,7 +128,7 @@ void print_improve_line(const TetMesh3& mesh, const TetMeshStats& s, const Mesh3
     return;
   }
   std::cout << s.collapses << " edge collapses (target aspect " << fmt4(run.options.target_aspect);
-  if (run.options.min_dihedral > 0) std::cout << ", min dihedral " << fmt4(run.options.min_dihedral) << " deg";
+  if (s.min_dihedral_target > 0) std::cout << ", min dihedral " << fmt4(s.min_dihedral_target) << " deg";
   std::cout << "), "
             << s.smoothed << " vertices smoothed, " << s.flips << " flips (" << s.boundary_flips
             << " on the boundary): tetrahedra " << s.constructed_tetrahedra
@@ -232,8 +232,8 @@ int run_mesh3(const std::vector<std::string>& argv) {
   }
   if (args.option("--min-dihedral")) {
     run.options.min_dihedral = args.number("--min-dihedral", 0);  // throws UsageError unless a finite number
-    if (!(run.options.min_dihedral > 0 && run.options.min_dihedral < 70.5))
-      throw UsageError("--min-dihedral must be above 0 and below 70.5 degrees (the regular tetrahedron's), got '" +
+    if (!(*run.options.min_dihedral >= 0 && *run.options.min_dihedral < 70.5))
+      throw UsageError("--min-dihedral must be at least 0 (none) and below 70.5 degrees (the regular tetrahedron's), got '" +
                        *args.option("--min-dihedral") + "'");
   }
   const std::optional<MeshFormat> forced = format_option(args, /*allow_svg=*/false);

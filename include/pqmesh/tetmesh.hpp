@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,12 @@ enum class TetSeparation {
   Always,  // the thesis's construction only. CLI --full-separation
 };
 
+// The improvement's quality target when TetMeshOptions::min_dihedral is unset
+// and no size bound is given (degrees). On the corpus it gives a minimum
+// dihedral angle of at least 20 degrees on every model whose input angles
+// are all at least 60 degrees (docs/MEASUREMENTS.md "3D mesher").
+inline constexpr double kDefaultMinDihedral = 20;
+
 struct TetMeshOptions {
   double max_size = 0;         // largest box side anywhere; 0: no limit. CLI --max-size
   TetSizeField size_field;     // empty: none. CLI --size-field
@@ -114,8 +121,11 @@ struct TetMeshOptions {
   // target_aspect, a collapse may not make a tetrahedron whose minimum
   // dihedral angle is below the smaller of this and the region's least
   // before. Coarsening then stops earlier where the mesh is good; nothing
-  // guarantees the target is reached. CLI --min-dihedral.
-  double min_dihedral = 0;
+  // guarantees the target is reached. Unset: kDefaultMinDihedral without a
+  // size bound, none with max_size or a size field (there the size asked
+  // for sets the count). TetMeshStats::min_dihedral_target is the one used.
+  // CLI --min-dihedral.
+  std::optional<double> min_dihedral;
   // Called at phase boundaries (may be empty).
   std::function<void(const TetMeshProgress&)> progress;
 };
@@ -176,6 +186,7 @@ struct TetMeshStats {
   std::int64_t constructed_tetrahedra = 0;
   double constructed_max_aspect = 0, constructed_min_dihedral = 0, constructed_max_dihedral = 0;
   std::int64_t collapses = 0, smoothed = 0, flips = 0, boundary_flips = 0;
+  double min_dihedral_target = 0;  // the improvement's quality target (degrees, 0: none)
   double seconds_improve = 0;
   std::string improve_failure;
   int depth = 0;                                          // deepest leaf level

@@ -120,7 +120,7 @@ def triangulate(points=None, segments=None, segment_markers=None, holes=None, re
 
 def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, regions=None, *,
                    domain=None, max_size=None, size_field=None, aligned_grid=False, warp=True,
-                   full_separation=False, improve=True, target_aspect=8.0, min_dihedral=0.0):
+                   full_separation=False, improve=True, target_aspect=8.0, min_dihedral=None):
     """Mesh a polyhedral domain (`pqmesh mesh` on a 3D input); returns a TetMesh.
 
     points (N, 3); facets: a list of polygons, each a list of vertex ids (or a list
@@ -142,7 +142,8 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
                   worst before and this aspect ratio (--target-aspect; at least 3)
     min_dihedral  quality target in degrees (--min-dihedral; 0: none): where the tetrahedra are
                   within target_aspect, a collapse never makes one with a smaller minimum dihedral
-                  angle than this and the least it replaces; not guaranteed to be reached
+                  angle than this and the least it replaces; not guaranteed to be reached.
+                  None: 20 without max_size and size_field, else none (stats["min_dihedral_target"])
 
     The result's attributes: domain, alpha (degrees), max_aspect_ratio,
     aspect_bound (the measured bound C / alpha), min_dihedral, max_dihedral
@@ -151,7 +152,7 @@ def tetrahedralize(points=None, facets=None, facet_markers=None, holes=None, reg
     domain = _domain(Domain3, domain, points, facets, facet_markers, holes, regions)
     return _pqmesh.tet_mesh(domain, _positive("max_size", max_size), size_field,
                             not aligned_grid, bool(warp), bool(full_separation), bool(improve),
-                            float(target_aspect), float(min_dihedral))
+                            float(target_aspect), None if min_dihedral is None else float(min_dihedral))
 
 
 def check(mesh, domain, *, no_boundary_steiner=False, max_issues=20, locate_vertices=True):

@@ -2,6 +2,7 @@
 // then alpha and the quality figures of the CLI's summary, all computed with
 // the GIL released. The figures become attributes of the returned TetMesh.
 #include <memory>
+#include <optional>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -31,20 +32,23 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("constructed_tetrahedra") = s.constructed_tetrahedra,
                   py::arg("constructed_max_aspect") = s.constructed_max_aspect, py::arg("collapses") = s.collapses,
                   py::arg("smoothed") = s.smoothed, py::arg("flips") = s.flips, py::arg("boundary_flips") = s.boundary_flips,
+                  py::arg("min_dihedral_target") = s.min_dihedral_target,
                   py::arg("improve_failure") = s.improve_failure,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
                   py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
 }
 
 py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,
-                        bool warp, bool full_separation, bool improve, double target_aspect, double min_dihedral) {
+                        bool warp, bool full_separation, bool improve, double target_aspect, py::object min_dihedral) {
   if (!(target_aspect >= 3)) throw py::value_error("target_aspect must be at least 3 (the regular tetrahedron)");
-  if (!(min_dihedral >= 0 && min_dihedral < 70.5))
+  const std::optional<double> target =
+      min_dihedral.is_none() ? std::nullopt : std::optional<double>(min_dihedral.cast<double>());
+  if (target && !(*target >= 0 && *target < 70.5))
     throw py::value_error("min_dihedral must be at least 0 and below 70.5 degrees (the regular tetrahedron's)");
   TetMeshOptions options;
   options.improve = improve;
   options.target_aspect = target_aspect;
-  options.min_dihedral = min_dihedral;
+  options.min_dihedral = target;
   if (full_separation) options.separation = TetSeparation::Always;
   options.max_size = max_size;
   options.generic_grid = generic_grid;

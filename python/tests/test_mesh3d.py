@@ -125,6 +125,10 @@ def test_min_dihedral_target_keeps_the_guarantee():
     for bad in (-1.0, 71.0):
         with pytest.raises(ValueError):
             pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, min_dihedral=bad)
+    # Unset: 20 degrees without a size bound, none with one; 0: none.
+    assert pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS).stats["min_dihedral_target"] == 20
+    assert pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, max_size=0.5).stats["min_dihedral_target"] == 0
+    assert pqmesh.tetrahedralize(CUBE_POINTS, CUBE_FACETS, min_dihedral=0).stats["min_dihedral_target"] == 0
 
 
 def test_cavity():

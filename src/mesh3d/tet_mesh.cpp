@@ -126,7 +126,9 @@ void improve(const Domain3& domain, const TetMeshOptions& options, Construction&
   improve3d::ImproveOptions io;
   io.aspect_cap = c.review.max_aspect;
   io.target_aspect = options.target_aspect;
-  io.min_dihedral = options.min_dihedral;
+  const bool sized = options.max_size > 0 || !options.size_field.points.empty();
+  io.min_dihedral = options.min_dihedral ? *options.min_dihedral : (sized ? 0 : kDefaultMinDihedral);
+  s.min_dihedral_target = io.min_dihedral;
   io.max_size = options.max_size;
   io.size_points = options.size_field.points;
   io.sizes = options.size_field.sizes;

@@ -100,10 +100,17 @@ absent "$work/never.vtu" "no output after a refused command line"
 
 # --min-dihedral: the improve line names the target and the counted boundary
 # flips; the mesh is checked; out-of-range values are refused with nothing written.
+# Without it the target is 20 degrees, none with --max-size; 0 turns it off.
+expect 0 "mesh l_block default target" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md.vtu"
+contains "$work/out" "^improve .*min dihedral 20 deg" "default target in the improve line"
+expect 0 "mesh l_block --min-dihedral 0" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md.vtu" --min-dihedral 0
+contains "$work/out" "^improve .*\(target aspect 8\), " "no target with --min-dihedral 0"
+expect 0 "mesh l_block --max-size" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md.vtu" --max-size 0.5
+contains "$work/out" "^improve .*\(target aspect 8\), " "no default target with --max-size"
 expect 0 "mesh l_block --min-dihedral 20" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md.vtu" --min-dihedral 20
 contains "$work/out" "^improve .*min dihedral 20 deg.*flips \([0-9]+ on the boundary\)" "--min-dihedral in the improve line"
 expect 0 "check --min-dihedral mesh" -- "$pqmesh" check "$work/md.vtu" --domain "$data/3d/l_block.poly"
-for bad in 0 70.6 x; do
+for bad in -1 70.6 x; do
   expect 64 "--min-dihedral $bad refused" -- "$pqmesh" mesh "$data/3d/l_block.poly" -o "$work/md_bad.vtu" --min-dihedral "$bad"
   absent "$work/md_bad.vtu" "--min-dihedral $bad writes nothing"
 done
