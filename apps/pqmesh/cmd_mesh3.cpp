@@ -86,6 +86,14 @@ SummaryQuality summary_quality(const TetMesh3& mesh, const std::vector<CellField
   return out;
 }
 
+// Quadrature refinement of I3(P) for the summary (lfs_integral's `refine`):
+// twice the library default 1/4, an eighth of the cells. On data/3d the
+// estimate stays within 1.5% of the one at 1/8 (the unit cube, whose lfs
+// varies most inside a cell, within 5%: 4.382 against 4.616), and the
+// quadrature of a tessellated part costs less than meshing it (pipe.off:
+// 247,488 cells, 11 s, against 1,546,240 cells, 40 s at 1/4).
+constexpr double kLfsRefine3 = 0.5;
+
 // The "size" line, printed when --lfs-integral asked for I3(P), the integral of
 // 1/lfs^3 over P (pqmesh/lfs3.hpp): up to a constant, a lower bound on the
 // tetrahedra of any bounded-aspect mesh of P (thesis §4.8, Theorem 14).
@@ -260,7 +268,7 @@ int run_mesh3(const std::vector<std::string>& argv) {
   run.lfs_integral = args.flag("--lfs-integral") && !quiet;
   if (run.lfs_integral) {  // the size estimate is for the summary only, on request
     start = Clock::now();
-    run.lfs = lfs_integral(domain);
+    run.lfs = lfs_integral(domain, kLfsRefine3);
     run.seconds_lfs = seconds_since(start);
   }
   start = Clock::now();
