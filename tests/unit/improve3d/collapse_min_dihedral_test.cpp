@@ -17,31 +17,17 @@
 #include <vector>
 
 #include "improve3d/collapse_check.hpp"
+#include "improve_support.hpp"
 #include "improve3d/collapse_mesh.hpp"
 #include "improve3d/size_bound.hpp"
 #include "improve3d/vertex_classes.hpp"
 #include "pqmesh/quality.hpp"
-#include "predicates/predicates.hpp"
 #include "quality/tetrahedron_quality_memo.hpp"
 
 namespace pqmesh::improve3d::detail {
 namespace {
 
 constexpr int kU = 6, kV = 0;  // u interior, v an input vertex
-
-TetMesh3 octahedron(Vec3 v, Vec3 u) {
-  TetMesh3 m;
-  m.vertices = {v, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, u};
-  for (const int x : {0, 1})
-    for (const int y : {2, 3})
-      for (const int z : {4, 5}) {
-        std::array<int, 4> k{x, y, z, kU};
-        const auto p = [&](int i) { return m.vertices[static_cast<std::size_t>(k[static_cast<std::size_t>(i)])]; };
-        if (orient3d(p(0), p(1), p(2), p(3)) != Sign::Positive) std::swap(k[0], k[1]);
-        m.tetrahedra.push_back(k);
-      }
-  return m;
-}
 
 // Six input vertices, u interior, no boundary triangles.
 VertexClasses classes() {
@@ -85,7 +71,7 @@ bool collapses(const TetMesh3& m, double min_dihedral) {
 }
 
 TEST(CollapseMinDihedral, RefusesBelowTheRuleAndTheRegionsLeast) {
-  const TetMesh3 m = octahedron({1.5, 0.9, 0.9}, {0, 0, 0});  // v pulled out: a flat fan tetrahedron
+  const TetMesh3 m = test::octahedron_star({1.5, 0.9, 0.9}, {0, 0, 0});  // v pulled out: a flat fan tetrahedron
   const double fan = least_dihedral(m, moved(m)), old_least = least_dihedral(m, m.tetrahedra);
   ASSERT_LT(fan + 1, old_least);  // the collapse lowers the region's least angle
   EXPECT_TRUE(collapses(m, 0));
@@ -95,7 +81,7 @@ TEST(CollapseMinDihedral, RefusesBelowTheRuleAndTheRegionsLeast) {
 }
 
 TEST(CollapseMinDihedral, AllowsWhatKeepsTheRegionsLeast) {
-  const TetMesh3 m = octahedron({1, 0, 0}, {0.3, 0.3, 0.3});  // near face (e_1, e_2, e_3): a flat old tetrahedron
+  const TetMesh3 m = test::octahedron_star({1, 0, 0}, {0.3, 0.3, 0.3});  // near face (e_1, e_2, e_3): a flat old tetrahedron
   const double fan = least_dihedral(m, moved(m)), old_least = least_dihedral(m, m.tetrahedra);
   ASSERT_LT(old_least, fan);  // min(D, old_least) = old_least for every D above it
   EXPECT_TRUE(collapses(m, 0));

@@ -102,4 +102,18 @@ std::vector<std::pair<int, double>> area_per_marker(const TetMesh3& mesh) {
   return {area.begin(), area.end()};
 }
 
+TetMesh3 octahedron_star(Vec3 first, Vec3 u) {
+  TetMesh3 m;
+  m.vertices = {first, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, u};
+  for (const int x : {0, 1})
+    for (const int y : {2, 3})
+      for (const int z : {4, 5}) {
+        std::array<int, 4> k{x, y, z, 6};
+        const auto p = [&](int i) { return m.vertices[static_cast<std::size_t>(k[static_cast<std::size_t>(i)])]; };
+        if (orient3d(p(0), p(1), p(2), p(3)) != Sign::Positive) std::swap(k[0], k[1]);
+        m.tetrahedra.push_back(k);
+      }
+  return m;
+}
+
 }  // namespace pqmesh::test

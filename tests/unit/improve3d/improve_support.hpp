@@ -41,4 +41,9 @@ MeshFigures figures(const TetMesh3& mesh);
 // Total boundary area per face marker, sorted by marker.
 std::vector<std::pair<int, double>> area_per_marker(const TetMesh3& mesh);
 
+// The star of vertex 6 at u in the octahedron with corners first, (-1, 0, 0),
+// (0, +-1, 0), (0, 0, +-1): eight tetrahedra (one per octant), each oriented
+// positive when it can be (exact orient3d), no boundary triangles.
+TetMesh3 octahedron_star(Vec3 first, Vec3 u);
+
 }  // namespace pqmesh::test

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "improve3d/collapse_check.hpp"
+#include "improve_support.hpp"
 #include "improve3d/collapse_mesh.hpp"
 #include "improve3d/improving_collapse.hpp"
 #include "improve3d/size_bound.hpp"
@@ -25,22 +26,8 @@ namespace {
 
 constexpr int kU = 6;
 
-TetMesh3 star(Vec3 u) {
-  TetMesh3 m;
-  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, u};
-  for (const int x : {0, 1})
-    for (const int y : {2, 3})
-      for (const int z : {4, 5}) {
-        std::array<int, 4> k{x, y, z, kU};
-        const auto p = [&](int i) { return m.vertices[static_cast<std::size_t>(k[static_cast<std::size_t>(i)])]; };
-        if (orient3d(p(0), p(1), p(2), p(3)) != Sign::Positive) std::swap(k[0], k[1]);
-        m.tetrahedra.push_back(k);
-      }
-  return m;
-}
-
 TEST(ImprovingCollapses, RemovesTheFlatTetrahedronWithoutLoweringTheLeastAngle) {
-  const TetMesh3 m = star({0.3, 0.3, 0.3});
+  const TetMesh3 m = test::octahedron_star({1, 0, 0}, {0.3, 0.3, 0.3});
   TetrahedronQualityMemo memo;
   CollapseMesh mesh(m, {}, memo);
   double old_least = 180;
