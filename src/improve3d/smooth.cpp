@@ -10,6 +10,7 @@
 
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
+#include "quality/tetrahedron_min_dihedral.hpp"
 
 namespace pqmesh::improve3d::detail {
 
@@ -91,7 +92,7 @@ std::array<Vec3, 4> corners(const CollapseMesh& mesh, const std::array<int, 4>& 
 
 double min_dihedral_at(const CollapseMesh& mesh, int t, int v, Vec3 q) {
   const auto p = corners(mesh, mesh.tet(t), v, q);
-  return tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_deg;
+  return tetrahedron_min_dihedral(p[0], p[1], p[2], p[3]);
 }
 
 // Keeps the coordinates a vertex of this mobility may not change at p's.
@@ -193,8 +194,12 @@ void Smoother::touched(const std::vector<int>& tets) {
 }
 
 // The quality of the star of v with v at q; false when a tetrahedron is not
-// positive or the star's worst aspect ratio exceeds `trial.worst_aspect` (the limit on entry).
-bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect,
+// positive, or has a minimum dihedral angle below `floor` (at or below it when
+// `strict`), or the star's worst aspect ratio exceeds `trial.worst_aspect`
+// (the limit on entry). The dihedral floor is tested first with the cheaper
+// tetrahedron_min_dihedral (the same doubles as tetrahedron_quality's), so
+// most refused candidates never compute an enclosing ball.
+bool Smoother::evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, std::vector<double>& aspect,
                         std::vector<double>& dihedral) {
   const double limit = trial.worst_aspect;
   trial.q = q;
@@ -207,6 +212,11 @@ bool Smoother::evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect
     if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
   }
   if (slanted(mobility_[static_cast<std::size_t>(v)]) && !fan_keeps_orientation(v, mesh_.point(v), q)) return false;
+  for (const int t : star_) {
+    const auto p = corners(mesh_, mesh_.tet(t), v, q);
+    const double least = tetrahedron_min_dihedral(p[0], p[1], p[2], p[3]);
+    if (least < floor || (strict && least == floor)) return false;  // a NaN angle fails neither (std::min below skips it)
+  }
   for (const int t : star_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
     const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
@@ -351,7 +361,7 @@ bool Smoother::try_vertex(int v) {
     const Vec3 q = candidates[i];
     if (!placed[i] || q == p) continue;
     Trial trial{q, limit, 0};
-    if (!evaluate(v, q, trial, aspect_, dihedral_)) continue;
+    if (!evaluate(v, q, best.min_dihedral, found, trial, aspect_, dihedral_)) continue;
     if (!(trial.min_dihedral >= best.min_dihedral) || (found && trial.min_dihedral == best.min_dihedral)) continue;
     if (!within_size(v, p, q)) continue;
     best = trial;

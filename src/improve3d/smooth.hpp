@@ -96,7 +96,8 @@ class Smoother {
     Vec3 q;
     double worst_aspect = 0, min_dihedral = 0;
   };
-  bool evaluate(int v, Vec3 q, Trial& trial, std::vector<double>& aspect, std::vector<double>& dihedral);
+  bool evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, std::vector<double>& aspect,
+                std::vector<double>& dihedral);
   bool place(int v, Vec3 p, Vec3& q);
   bool fan_keeps_orientation(int v, Vec3 p, Vec3 q);
   bool within_size(int v, Vec3 p, Vec3 q) const;

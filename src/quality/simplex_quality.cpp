@@ -14,6 +14,7 @@
 
 #include "predicates/predicates.hpp"
 #include "pqmesh/quality.hpp"
+#include "quality/tetrahedron_min_dihedral.hpp"
 #include "quality/tetrahedron_shape.hpp"
 
 namespace pqmesh {
@@ -461,6 +462,41 @@ TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 }
 
 }  // namespace
+
+double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  if (orient3d(a, b, c, d) == Sign::Zero) return 0.0;
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  const std::array<Vec3, 4> n = {cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)};
+  // tet_core's normals and keys. The smallest dihedral angle is pi minus the
+  // largest angle phi between normals; the keys increase with phi, so (as in
+  // extreme_candidates) only the last largest key hi and the keys not
+  // separated from it can give the largest computed phi: every other angle's
+  // computed phi is strictly below hi's, and pi - phi rounds monotonically.
+  std::array<double, 4> n2{}, inv{};
+  std::array<bool, 4> in_range{};
+  for (int k = 0; k < 4; ++k) {
+    n2[k] = norm2(n[k]);
+    in_range[k] = n2[k] >= 0x1p-500 && n2[k] <= 0x1p500;
+    inv[k] = 1.0 / std::sqrt(n2[k]);
+  }
+  static constexpr int kPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  std::array<double, 6> xs{}, key{};
+  for (int i = 0; i < 6; ++i) {
+    const int k = kPair[i][0], l = kPair[i][1];
+    xs[i] = dot(n[k], n[l]);
+    key[i] = in_range[k] && in_range[l] ? -(xs[i] * inv[k]) * inv[l] : std::numeric_limits<double>::quiet_NaN();
+  }
+  constexpr double kCosGap = 0x1p-20;
+  const auto pick = extreme_candidates<6>(key, [](double below, double above) { return below + kCosGap <= above; });
+  double min_dihedral = kInf;
+  for (int i = 0; i < 6; ++i) {
+    if (!pick.needed[i] || (i != pick.hi && key[i] + kCosGap <= key[pick.hi])) continue;
+    const double ys = norm(cross(n[kPair[i][0]], n[kPair[i][1]]));
+    const double phi = xs[i] == 0 && ys > 0 ? std::numbers::pi / 2 : std::atan2(ys, xs[i]);
+    min_dihedral = std::min(min_dihedral, std::numbers::pi - phi);
+  }
+  return min_dihedral * kDeg;
+}
 
 TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const TetCore core = tet_core(a, b, c, d);

@@ -4,7 +4,8 @@
 // folding all angles: checked bit for bit against that fold, written here
 // from the definitions (angle_between, dihedral = pi - angle of the face area
 // vectors), over seeded random shapes, octree-like shapes with right and equal
-// angles, and shapes whose angles differ by a few ulps.
+// angles, and shapes whose angles differ by a few ulps. The same for
+// tetrahedron_min_dihedral, which evaluates only the smallest dihedral angle.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 #include "predicates/predicates.hpp"
 #include "pqmesh/quality.hpp"
+#include "quality/tetrahedron_min_dihedral.hpp"
 
 namespace pqmesh {
 namespace {
@@ -45,11 +47,16 @@ Extremes all_angles(Vec2 a, Vec2 b, Vec2 c) {
   return {std::min({t[0], t[1], t[2]}) * kDeg, std::max({t[0], t[1], t[2]}) * kDeg};
 }
 
+// tetrahedron_min_dihedral (min only) gives the same double as well.
 void expect_same_tet(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  if (orient3d(a, b, c, d) == Sign::Zero) return;  // degenerate: 0 and 180 by definition
+  if (orient3d(a, b, c, d) == Sign::Zero) {  // degenerate: 0 and 180 by definition
+    EXPECT_EQ(tetrahedron_min_dihedral(a, b, c, d), 0.0);
+    return;
+  }
   const TetQuality q = tetrahedron_quality(a, b, c, d);
   const Extremes e = all_dihedrals(a, b, c, d);
   EXPECT_EQ(q.min_dihedral_deg, e.min);
+  EXPECT_EQ(tetrahedron_min_dihedral(a, b, c, d), e.min);
   EXPECT_EQ(q.max_dihedral_deg, e.max);
 }
 
