@@ -9,7 +9,9 @@
 // as it meets them (the segment is compacted in place). A segment that must
 // grow beyond its capacity moves to the end of the pool with twice the room;
 // the hole it leaves is not reused, and the doubling keeps the pool within a
-// small multiple of the ids ever appended.
+// small multiple of the ids ever appended: when a moved segment does not fit
+// the pool's capacity, the segments are packed into a new pool without holes
+// with a quarter spare (amortised O(1) per appended id; no doubling).
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -32,7 +34,18 @@ class Adjacency {
   void append(int v, std::span<const int> elements);
   void clear(int v) { size_[static_cast<std::size_t>(v)] = 0; }
 
+  // Renumbers the elements after their ids were compacted: new_id[e] is e's
+  // new id, or -1 when e is dead (dropped). Each segment keeps its order and
+  // moves into a new pool without holes, with kSlack spare entries. O(pool).
+  void renumber(const std::vector<int>& new_id);
+
  private:
+  // Moves every segment, in vertex order, into a new pool without holes
+  // (kSlack spare entries each), leaving max(a quarter, room) free at its end;
+  // new_id (may be null: ids kept) as in renumber.
+  void rebuild(const int* new_id, std::size_t room);
+  void pack(std::size_t room);
+
   std::vector<int> pool_;
   std::vector<std::int64_t> begin_;
   std::vector<int> size_, capacity_;

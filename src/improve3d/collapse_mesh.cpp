@@ -14,6 +14,23 @@ void repoint(std::array<int, K>& element, int u, int v) {
     if (x == u) x = v;
 }
 
+// v without the entries whose new_id is -1, in order, with room for a sixteenth more.
+template <class T>
+std::vector<T> kept(const std::vector<T>& v, const std::vector<int>& new_id, std::size_t live) {
+  std::vector<T> out;
+  out.reserve(live + live / 16 + 16);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (new_id[i] >= 0) out.push_back(v[i]);
+  return out;
+}
+
+// Room for one more element, growing by a quarter (a flip appends a few
+// tetrahedra to arrays of millions; doubling them would double the peak).
+template <class T>
+void room_for_one(std::vector<T>& v) {
+  if (v.size() == v.capacity()) v.reserve(v.capacity() + v.capacity() / 4 + 16);
+}
+
 template <class T>
 std::vector<T> or_zeros(const std::vector<T>& values, std::size_t n) {
   return values.size() == n ? values : std::vector<T>(n, T{});
@@ -75,6 +92,10 @@ void CollapseMesh::apply(const Collapse& c) {
   --live_vertices_;
 }
 
+std::int64_t CollapseMesh::live_faces() const {
+  return std::count_if(faces_.begin(), faces_.end(), [](const std::array<int, 3>& k) { return k[0] >= 0; });
+}
+
 double CollapseMesh::worst_aspect() const {
   double worst = 0;
   for (std::size_t t = 0; t < tets_.size(); ++t)
@@ -98,7 +119,24 @@ void CollapseMesh::move_vertex(int v, Vec3 p, std::span<const int> tets, std::sp
   }
 }
 
+void CollapseMesh::compact_tets() {
+  std::vector<int> new_id(tets_.size(), -1);
+  int live = 0;
+  for (std::size_t t = 0; t < tets_.size(); ++t)
+    if (tets_[t][0] >= 0) new_id[t] = live++;
+  const auto n = static_cast<std::size_t>(live);
+  tets_ = kept(tets_, new_id, n);
+  tet_markers_ = kept(tet_markers_, new_id, n);
+  aspect_ = kept(aspect_, new_id, n);
+  dihedral_ = kept(dihedral_, new_id, n);
+  tets_of_vertex_.renumber(new_id);
+}
+
 int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect, double dihedral) {
+  room_for_one(tet_markers_);
+  room_for_one(tets_);
+  room_for_one(aspect_);
+  room_for_one(dihedral_);
   const int t = static_cast<int>(tets_.size());
   tets_.push_back(k);
   tet_markers_.push_back(marker);
@@ -131,6 +169,7 @@ void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) con
   std::vector<int> new_id(points_.size(), -1);
   mesh.vertices.clear();
   mesh.vertex_markers.clear();
+  mesh.vertices.reserve(static_cast<std::size_t>(live_vertices_));
   for (std::size_t v = 0; v < points_.size(); ++v) {
     if (vertex_alive_[v] == 0) continue;
     new_id[v] = static_cast<int>(mesh.vertices.size());
@@ -140,6 +179,8 @@ void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) con
   const auto renumbered = [&](int x) { return new_id[static_cast<std::size_t>(x)]; };
   mesh.tetrahedra.clear();
   mesh.tetrahedron_markers.clear();
+  mesh.tetrahedra.reserve(static_cast<std::size_t>(live_tets_));
+  if (has_tet_markers_) mesh.tetrahedron_markers.reserve(static_cast<std::size_t>(live_tets_));
   for (std::size_t t = 0; t < tets_.size(); ++t) {
     const auto& k = tets_[t];
     if (k[0] < 0) continue;

@@ -43,6 +43,7 @@ class CollapseMesh {
   int face_marker(int f) const { return face_markers_[static_cast<std::size_t>(f)]; }
   std::int64_t live_tets() const { return live_tets_; }
   std::int64_t live_vertices() const { return live_vertices_; }
+  std::int64_t live_faces() const;  // O(boundary triangles)
 
   // Appends the live tetrahedra (boundary triangles) of v to out, in list
   // order, unlinking dead ones met on the way.
@@ -73,6 +74,12 @@ class CollapseMesh {
   // Boundary flips: a new boundary triangle (new id, returned) and the deletion of one.
   int add_face(const std::array<int, 3>& k, int marker, int facet);
   void remove_face(int f);
+  // Drops the dead tetrahedra: the live ones are renumbered in their order
+  // (so write_back's order is unchanged) and every vertex's list keeps its
+  // order. The per-tetrahedron arrays are reallocated to the live count with a
+  // little room for flips. Tetrahedron ids held elsewhere are void after it.
+  // O(tetrahedra + adjacency).
+  void compact_tets();
   // The survivors, renumbered in their old order, into mesh and face_facets.
   void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
 

@@ -34,6 +34,12 @@ class EdgeQueue {
   void push(const EdgeEntry& e) { heap_.push(e); }
   bool empty() const { return next_ == sorted_.size() && heap_.empty(); }
   EdgeEntry pop();
+  // Frees the entries (the queue must be empty or is emptied).
+  void release() {
+    sorted_ = {};
+    next_ = 0;
+    heap_ = {};
+  }
 
  private:
   struct Later {

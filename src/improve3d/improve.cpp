@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,6 +81,14 @@ void validate(const Domain3& domain, const TetMesh3& mesh, const std::vector<int
     throw InvalidInput(ErrorCode::WrongCount, "improve_mesh: size points and sizes differ in number, or max_size < 0");
   for (const double s : options.sizes)
     if (!(s > 0)) throw InvalidInput(ErrorCode::NonFinite, "improve_mesh: a size is not positive");
+}
+
+// Frees the arrays of mesh (their content is in CollapseMesh).
+void release(TetMesh3& mesh) {
+  mesh.vertices = {};
+  mesh.vertex_markers = {};
+  mesh.tetrahedra = {};
+  mesh.tetrahedron_markers = {};
 }
 
 double length2(const CollapseMesh& mesh, int a, int b) {
@@ -160,6 +169,13 @@ class Coarsener {
     return result;
   }
 
+  // Frees the spare room of the refused list and the finished pass's queue
+  // (held across smoothing and flips otherwise).
+  void trim() {
+    refused_.shrink_to_fit();
+    queue_.release();
+  }
+
  private:
   struct Refused {
     int a = -1, b = -1;
@@ -174,7 +190,8 @@ class Coarsener {
   std::vector<EdgeEntry> all_edges() {
     Neighbours neighbours(mesh_.vertex_count());
     std::vector<EdgeEntry> edges;
-    edges.reserve(static_cast<std::size_t>(mesh_.live_tets()) * 6 / 5 + 16);
+    // Euler's formula for a ball: edges = vertices + tetrahedra + boundary triangles / 2 - 1.
+    edges.reserve(static_cast<std::size_t>(mesh_.live_vertices() + mesh_.live_tets() + mesh_.live_faces() / 2 + 16));
     for (int a = 0; a < mesh_.vertex_count(); ++a) {
       if (!mesh_.vertex_alive(a)) continue;
       for (const int b : neighbours.of(mesh_, a))
@@ -218,7 +235,7 @@ class Coarsener {
   const detail::VertexClasses& classes_;
   Collapser& collapser_;
   std::vector<std::int64_t> changed_at_;  // clock_ when the vertex's star last changed
-  std::vector<Refused> refused_;
+  std::deque<Refused> refused_;  // millions in a first pass: grows in blocks, never copied whole
   std::vector<EdgeEntry> fresh_;  // edges made otherwise than by a collapse, for the next pass
   std::int64_t clock_ = 0;  // edges tried so far
   bool first_pass_ = true;
@@ -239,6 +256,7 @@ std::int64_t collapse_passes(Coarsener& coarsener, Collapser& collapser, Improve
     if (result.collapses == 0 || (pass > 0 && static_cast<double>(result.collapses) < kMinYield * static_cast<double>(result.edges)))
       break;
   }
+  coarsener.trim();
   stats.collapses += collapses;
   return collapses;
 }
@@ -294,6 +312,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   TetrahedronQualityMemo memo;
   CollapseMesh work(mesh, face_facets, memo);
   const detail::VertexClasses classes = detail::classify_vertices(domain, mesh, face_facets);
+  release(mesh);  // work holds it; write_back fills it again
   const detail::SizeBound size(options.max_size, options.size_points, options.sizes);
   Collapser collapser(work, classes, size, {options.aspect_cap, options.target_aspect, options.min_dihedral}, memo);
 
@@ -316,6 +335,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
     const std::int64_t collapses = collapse_passes(coarsener, collapser, stats);
     if (round == 0) stats.min_dihedral_collapsed = work.min_dihedral();
     if (round > 0 && collapses == 0) break;
+    work.compact_tets();  // before take(): the ids smoothing and flips see
     changes.take(work);
     if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, stats) == 0) break;
   }

@@ -96,7 +96,10 @@ struct ImproveStats {
 // describe the coarsened mesh, vertices and tetrahedra renumbered compactly in a deterministic order
 // (the surviving ones in their old order; tetrahedra made by flips after the surviving ones, in
 // creation order).
-// Throws InvalidInput when face_facets or a marker array has the wrong size or a facet id is out of range.
+// Throws InvalidInput when face_facets or a marker array has the wrong size or a facet id is out of range
+// (mesh untouched). Memory: the mesh's vertex and tetrahedron arrays are freed once copied into the working
+// mesh (an exception after that leaves them empty); the working mesh drops its dead tetrahedra after each
+// round's collapses.
 ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int>& face_facets,
                           const ImproveOptions& options);
 

@@ -196,9 +196,13 @@ void Smoother::touched(const std::vector<int>& tets) {
 // The quality of the star of v with v at q; false when a tetrahedron is not
 // positive, or has a minimum dihedral angle below `floor` (at or below it when
 // `strict`), or the star's worst aspect ratio exceeds `trial.worst_aspect`
-// (the limit on entry). The dihedral floor is tested first with the cheaper
-// tetrahedron_min_dihedral (the same doubles as tetrahedron_quality's), so
-// most refused candidates never compute an enclosing ball.
+// (the limit on entry). Orientation and the dihedral floor are tested first,
+// the star's tetrahedra in increasing order of their minimum dihedral angle
+// before the move (by_dihedral_: the likeliest to stay below the floor come
+// first), with the cheaper tetrahedron_min_dihedral (the same doubles as
+// tetrahedron_quality's), so most refused candidates stop at their first
+// tetrahedra and never compute an enclosing ball. Every test must pass, so
+// their order does not change the outcome.
 bool Smoother::evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, std::vector<double>& aspect,
                         std::vector<double>& dihedral) {
   const double limit = trial.worst_aspect;
@@ -207,16 +211,14 @@ bool Smoother::evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, 
   trial.min_dihedral = 180;
   aspect.clear();
   dihedral.clear();
-  for (const int t : star_) {
+  for (const int t : by_dihedral_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
-    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
-  }
-  if (slanted(mobility_[static_cast<std::size_t>(v)]) && !fan_keeps_orientation(v, mesh_.point(v), q)) return false;
-  for (const int t : star_) {
-    const auto p = corners(mesh_, mesh_.tet(t), v, q);
-    const double least = tetrahedron_min_dihedral(p[0], p[1], p[2], p[3]);
+    const Sign s = orient3d(p[0], p[1], p[2], p[3]);
+    if (s != Sign::Positive) return false;
+    const double least = tetrahedron_min_dihedral(p[0], p[1], p[2], p[3], s);
     if (least < floor || (strict && least == floor)) return false;  // a NaN angle fails neither (std::min below skips it)
   }
+  if (slanted(mobility_[static_cast<std::size_t>(v)]) && !fan_keeps_orientation(v, mesh_.point(v), q)) return false;
   for (const int t : star_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
     const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
@@ -354,6 +356,9 @@ bool Smoother::try_vertex(int v) {
   for (std::size_t i = 0; i < candidates.size(); ++i)
     placed[i] = place(v, p, candidates[i]);  // on the facet's plane or the edge's line
 
+  by_dihedral_.assign(star_.begin(), star_.end());
+  std::stable_sort(by_dihedral_.begin(), by_dihedral_.end(),
+                   [&](int a, int b) { return mesh_.dihedral(a) < mesh_.dihedral(b); });
   const double limit = std::min(old_worst, cap_);
   Trial best{p, 0, old_min + kMinDihedralGain};
   bool found = false;

@@ -115,6 +115,7 @@ class Smoother {
   std::vector<std::uint8_t> moved_;
   bool first_pass_ = true;
   std::vector<int> star_, faces_, neighbours_;
+  std::vector<int> by_dihedral_;  // star_ by increasing minimum dihedral angle (evaluate's test order)
   std::vector<std::uint64_t> marks_;
   std::uint64_t stamp_ = 0;
   std::vector<double> aspect_, dihedral_, best_aspect_, best_dihedral_;

@@ -464,7 +464,11 @@ TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 }  // namespace
 
 double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  if (orient3d(a, b, c, d) == Sign::Zero) return 0.0;
+  return tetrahedron_min_dihedral(a, b, c, d, orient3d(a, b, c, d));
+}
+
+double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign orientation) {
+  if (orientation == Sign::Zero) return 0.0;
   const Vec3 u = b - a, v = c - a, w = d - a;
   const std::array<Vec3, 4> n = {cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)};
   // tet_core's normals and keys. The smallest dihedral angle is pi minus the
