@@ -357,8 +357,9 @@ bool Smoother::try_vertex(int v) {
     placed[i] = place(v, p, candidates[i]);  // on the facet's plane or the edge's line
 
   by_dihedral_.assign(star_.begin(), star_.end());
-  std::stable_sort(by_dihedral_.begin(), by_dihedral_.end(),
-                   [&](int a, int b) { return mesh_.dihedral(a) < mesh_.dihedral(b); });
+  for (std::size_t i = 1; i < by_dihedral_.size(); ++i)  // insertion sort: a star is a few dozen, no allocation
+    for (std::size_t j = i; j > 0 && mesh_.dihedral(by_dihedral_[j]) < mesh_.dihedral(by_dihedral_[j - 1]); --j)
+      std::swap(by_dihedral_[j], by_dihedral_[j - 1]);
   const double limit = std::min(old_worst, cap_);
   Trial best{p, 0, old_min + kMinDihedralGain};
   bool found = false;
