@@ -10,6 +10,7 @@
 #include "improve3d/smooth.hpp"
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
+#include "quality/tetrahedron_min_dihedral.hpp"
 
 namespace pqmesh::improve3d::detail {
 
@@ -54,7 +55,7 @@ bool Flipper::try_tet(int t) {
   }
   bool found = false;
   const auto consider = [&](bool possible) {
-    if (!possible || !gains(trial_)) return;
+    if (!possible) return;
     if (found && !(trial_.min_dihedral > best_.min_dihedral)) return;
     std::swap(best_, trial_);
     found = true;
@@ -79,14 +80,12 @@ bool Flipper::edge_removal(int t, int i, int j, Flip& flip) {
   flip.old_faces.clear();
   flip.faces.clear();
   if (ring_.closed ? on_boundary(a, b, -1) : !boundary_pair(flip)) return false;
-  double old_worst = 0;
-  for (const int s : ring_.tets) old_worst = std::max(old_worst, mesh_.aspect(s));
-  const double limit = std::min(old_worst, cap_);
+  const Bounds limits = bounds(ring_.tets);
   RingScores scores(m);
   figures_.resize(static_cast<std::size_t>(m * m * m));
   for (int x = 0; x < m; ++x)
     for (int y = x + 1; y < m; ++y)
-      for (int z = y + 1; z < m; ++z) scores.set(x, y, z, score(x, y, z, limit));
+      for (int z = y + 1; z < m; ++z) scores.set(x, y, z, score(x, y, z, limits));
   if (best_ring_triangulation(scores, triangles_) == kForbidden) return false;
   flip.tets.clear();
   flip.aspect.clear();
@@ -157,10 +156,10 @@ bool Flipper::face_flip(int t, int i, Flip& flip) {
   flip.aspect.clear();
   flip.dihedral.clear();
   flip.min_dihedral = 180;
-  const double limit = std::min(std::max(mesh_.aspect(t), mesh_.aspect(other)), cap_);
+  const Bounds limits = bounds(flip.old_tets);
   TetQuality q;
   for (const std::array<int, 4>& k : {std::array<int, 4>{a, b, e, d}, {b, c, e, d}, {c, a, e, d}}) {
-    if (!admissible(k, limit, q)) return false;
+    if (!admissible(k, limits, q)) return false;
     take(k, q, flip);
   }
   return true;
@@ -178,26 +177,39 @@ bool Flipper::one_region(const std::vector<int>& tets) const {
   return std::all_of(tets.begin(), tets.end(), [&](int s) { return mesh_.tet_marker(s) == mesh_.tet_marker(tets[0]); });
 }
 
-// Rules 1, 3 and 4 of flips.hpp for one new tetrahedron k, its quality into q: positive (exact),
-// within the size bound, aspect ratio at most limit (NaN never passes).
-bool Flipper::admissible(const std::array<int, 4>& k, double limit, TetQuality& q) const {
+// Rules 3 and 5 of flips.hpp for new tetrahedra replacing old_tets: aspect ratio at most the old
+// ones' worst and aspect_cap, minimum dihedral angle at least the old ones' least + kMinDihedralGain.
+Flipper::Bounds Flipper::bounds(const std::vector<int>& old_tets) const {
+  double old_worst = 0, old_min = 180;
+  for (const int s : old_tets) {
+    old_worst = std::max(old_worst, mesh_.aspect(s));
+    old_min = std::min(old_min, mesh_.dihedral(s));
+  }
+  return {std::min(old_worst, cap_), old_min + kMinDihedralGain};
+}
+
+// Rules 1, 3, 4 and 5 of flips.hpp for one new tetrahedron k, its quality into q: positive
+// (exact), within the size bound, minimum dihedral angle at least the floor, aspect ratio at most
+// the limit (NaN passes neither).
+bool Flipper::admissible(const std::array<int, 4>& k, const Bounds& limits, TetQuality& q) const {
   const std::array<Vec3, 4> p = {mesh_.point(k[0]), mesh_.point(k[1]), mesh_.point(k[2]), mesh_.point(k[3])};
   if (orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
   if (size_.bounded() && !size_.allows(p)) return false;
+  if (!(tetrahedron_min_dihedral(p[0], p[1], p[2], p[3], Sign::Positive) >= limits.dihedral)) return false;
   q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
-  return q.aspect_ratio <= limit && q.min_dihedral_deg == q.min_dihedral_deg;
+  return q.aspect_ratio <= limits.aspect;
 }
 
 // The score of ring triangle (x, y, z) of edge (a, b): the smaller minimum dihedral angle of its
 // tetrahedra (a, r_x, r_y, r_z) and (r_x, r_y, r_z, b), kept in figures_, or kForbidden when one
 // is not admissible.
-double Flipper::score(int x, int y, int z, double limit) {
+double Flipper::score(int x, int y, int z, const Bounds& limits) {
   const std::vector<int>& r = ring_.ring;
   const int m = static_cast<int>(r.size());
   const int rx = r[static_cast<std::size_t>(x)], ry = r[static_cast<std::size_t>(y)],
             rz = r[static_cast<std::size_t>(z)];
   auto& q = figures_[static_cast<std::size_t>((x * m + y) * m + z)];
-  if (!admissible({ring_.a, rx, ry, rz}, limit, q[0]) || !admissible({rx, ry, rz, ring_.b}, limit, q[1]))
+  if (!admissible({ring_.a, rx, ry, rz}, limits, q[0]) || !admissible({rx, ry, rz, ring_.b}, limits, q[1]))
     return kForbidden;
   return std::min(q[0].min_dihedral_deg, q[1].min_dihedral_deg);
 }
@@ -208,13 +220,6 @@ void Flipper::take(const std::array<int, 4>& k, const TetQuality& q, Flip& flip)
   flip.aspect.push_back(q.aspect_ratio);
   flip.dihedral.push_back(q.min_dihedral_deg);
   flip.min_dihedral = std::min(flip.min_dihedral, q.min_dihedral_deg);
-}
-
-// Rule 5 of flips.hpp: the new tetrahedra's least minimum dihedral angle gains kMinDihedralGain.
-bool Flipper::gains(const Flip& flip) const {
-  double old_min = 180;
-  for (const int s : flip.old_tets) old_min = std::min(old_min, mesh_.dihedral(s));
-  return flip.min_dihedral >= old_min + kMinDihedralGain;
 }
 
 void Flipper::apply(const Flip& flip) {

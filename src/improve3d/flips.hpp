@@ -38,10 +38,15 @@
 // its six edges and the 2-3 flips of its four faces, in that enumeration order, and
 // does the best accepted one (largest new minimum dihedral, ties: the first).
 // New tetrahedra and boundary triangles get new ids (collapse_mesh.hpp); new
-// tetrahedra wait for the next pass. Rules 1, 3 and 4 are decided once per
-// candidate tetrahedron: for an edge removal while scoring the ring's
-// triangles (each triangle's two tetrahedra, kept for the triangulation
-// chosen), for a 2-3 flip on its three tetrahedra. Cost per tetrahedron
+// tetrahedra wait for the next pass. Rules 1, 3, 4 and 5 are decided once per
+// candidate tetrahedron (rule 5 as a floor on each new tetrahedron's angle:
+// the flip's least angle is the least of its tetrahedra'): for an edge
+// removal while scoring the ring's triangles (each triangle's two tetrahedra,
+// kept for the triangulation chosen; a triangle below the floor is forbidden,
+// which leaves the program's choice unchanged whenever that choice passes
+// rule 5), for a 2-3 flip on its three tetrahedra. The angle is measured
+// before the aspect ratio (tetrahedron_min_dihedral, the same double), so a
+// tetrahedron below the floor costs no enclosing ball. Cost per tetrahedron
 // visited: O(1) ring gathers and 2 * C(kMaxRingVertices, 3) quality
 // evaluations per edge at most.
 #include <array>
@@ -83,10 +88,14 @@ class Flipper {
   bool face_flip(int t, int i, Flip& flip);
   bool on_boundary(int a, int b, int c);
   bool one_region(const std::vector<int>& tets) const;
-  bool admissible(const std::array<int, 4>& k, double limit, TetQuality& q) const;
-  double score(int x, int y, int z, double limit);
+  // What a new tetrahedron must meet: rule 3's aspect ratio limit, rule 5's angle floor.
+  struct Bounds {
+    double aspect = 0, dihedral = 0;
+  };
+  Bounds bounds(const std::vector<int>& old_tets) const;
+  bool admissible(const std::array<int, 4>& k, const Bounds& bounds, TetQuality& q) const;
+  double score(int x, int y, int z, const Bounds& bounds);
   void take(const std::array<int, 4>& k, const TetQuality& q, Flip& flip) const;
-  bool gains(const Flip& flip) const;
   void apply(const Flip& flip);
 
   CollapseMesh& mesh_;
