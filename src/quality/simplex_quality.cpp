@@ -382,16 +382,83 @@ struct TetCore {
   bool has_frame;
 };
 
+// The face area vectors of tetrahedron abcd and the keys that order the six
+// angles between them, shared by tet_core and tetrahedron_min_dihedral so both
+// evaluate the same doubles. u = b - a, v = c - a, w = d - a; n holds the area
+// vectors of the faces opposite a, b, c, d: each is the gradient of 6 x volume
+// with respect to that vertex, so for a positive tetrahedron all four point
+// INTO the tetrahedron (towards the opposite vertex), and for an inverted one
+// all four point out. Either way the dihedral angle at the edge shared by faces
+// k and l is pi - angle(N_k, N_l).
+// Dihedral angle i at the edge of faces k < l (kDihedralPair[i]) is
+// pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i), y_i = |n_k x n_l|,
+// x_i = n_k . n_l. Keys for extreme_candidates: -cos of the exact angle
+// between the (double) normals, -x_i / (|n_k| |n_l|), increasing on [0, pi]
+// and changing by at most the change of the angle (its derivative is
+// sin <= 1). Keys kCosGap = 2^-20 apart thus order the exact angles with a gap
+// of nearly 2^-20, far above the error of the keys (a dot product, a square
+// root and three roundings: a few ulps of 1) and of the computed angles
+// (y_i and x_i are within a few ulps of |n_k| |n_l| of the exact sine and
+// cosine terms, so atan2(y_i, x_i) is within a few ulps of pi of the exact
+// angle) -- as long as |n_k|^2 and |n_l|^2 lie in [2^-500, 2^500], so that
+// nothing underflows or overflows; otherwise the key is NaN and the angle
+// computed. pi - phi rounds monotonically. So the dihedral angles that `pick`
+// skips lie strictly between computed ones, and y_i (a cross product and a
+// square root) is computed only for the angles a caller evaluates
+// (dihedral_angle).
+constexpr int kDihedralPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+constexpr double kCosGap = 0x1p-20;
+
+struct DihedralKeys {
+  Vec3 u, v, w;
+  std::array<Vec3, 4> n;
+  std::array<double, 4> nn;       // |n_k|
+  std::array<double, 6> xs, key;  // x_i and the key of angle i
+  ExtremeCandidates<6> pick;
+};
+
+// `inline`: with the hint GCC inlines it into both callers; out of line, the
+// struct returned through memory costs tetrahedron_min_dihedral about 10% more
+// instructions.
+inline DihedralKeys dihedral_keys(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  DihedralKeys s;
+  s.u = b - a;
+  s.v = c - a;
+  s.w = d - a;
+  s.n = {cross(d - b, c - b), cross(s.v, s.w), cross(s.w, s.u), cross(s.u, s.v)};
+  std::array<double, 4> inv{};
+  std::array<bool, 4> in_range{};
+  for (int k = 0; k < 4; ++k) {
+    const double n2 = norm2(s.n[k]);
+    s.nn[k] = std::sqrt(n2);  // == norm(n[k])
+    in_range[k] = n2 >= 0x1p-500 && n2 <= 0x1p500;
+    inv[k] = 1.0 / s.nn[k];
+  }
+  for (int i = 0; i < 6; ++i) {
+    const int k = kDihedralPair[i][0], l = kDihedralPair[i][1];
+    s.xs[i] = dot(s.n[k], s.n[l]);
+    s.key[i] = in_range[k] && in_range[l] ? -(s.xs[i] * inv[k]) * inv[l] : std::numeric_limits<double>::quiet_NaN();
+  }
+  s.pick = extreme_candidates<6>(s.key, [](double below, double above) { return below + kCosGap <= above; });
+  return s;
+}
+
+// Dihedral angle i of the tetrahedron, in radians: pi - atan2(y_i, x_i).
+double dihedral_angle(const DihedralKeys& s, int i) {
+  // y_i, x_i: angle_between's atan2 arguments
+  const double ys = norm(cross(s.n[kDihedralPair[i][0]], s.n[kDihedralPair[i][1]]));
+  // atan2(y, +-0) is pi/2 rounded for every y > 0 (C Annex F): the right
+  // dihedral angles of the grid tetrahedra skip the call.
+  const double phi = s.xs[i] == 0 && ys > 0 ? std::numbers::pi / 2 : std::atan2(ys, s.xs[i]);
+  return std::numbers::pi - phi;
+}
+
 TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   TetQuality q{};
   const Sign orientation = orient3d(a, b, c, d);
-  const Vec3 u = b - a, v = c - a, w = d - a;
-  // Area vectors of the faces opposite a, b, c, d: each is the gradient of
-  // 6 x volume with respect to that vertex, so for a positive tetrahedron all
-  // four point INTO the tetrahedron (towards the opposite vertex), and for an
-  // inverted one all four point out. Either way the dihedral angle at the edge
-  // shared by faces k and l is pi - angle(N_k, N_l).
-  const std::array<Vec3, 4> n = {cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)};
+  const DihedralKeys s = dihedral_keys(a, b, c, d);
+  const Vec3 &u = s.u, &v = s.v, &w = s.w;
+  const std::array<Vec3, 4>& n = s.n;
   const double det = dot(u, n[1]);
   q.volume = with_sign(det / 6.0, orientation);
   if (orientation == Sign::Zero) {
@@ -400,54 +467,18 @@ TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     q.aspect_ratio = q.sphere_ratio = q.radius_edge = kInf;
     return {q, true, 0.0, kInf, {}, false};
   }
-  // Dihedral angle i at the edge of faces k < l (pairs in loop order) is
-  // pi - angle_between(n[k], n[l]) = pi - atan2(y_i, x_i), y_i = |n_k x n_l|,
-  // x_i = n_k . n_l. Keys for extreme_candidates: -cos of the exact angle
-  // between the (double) normals, -x_i / (|n_k| |n_l|), increasing on [0, pi]
-  // and changing by at most the change of the angle (its derivative is
-  // sin <= 1). Keys 2^-20 apart thus order the exact angles with a gap of
-  // nearly 2^-20, far above the error of the keys (a dot product, a square
-  // root and three roundings: a few ulps of 1) and of the computed angles
-  // (y_i and x_i are within a few ulps of |n_k| |n_l| of the exact sine and
-  // cosine terms, so atan2(y_i, x_i) is within a few ulps of pi of the exact
-  // angle) -- as long as |n_k|^2 and |n_l|^2 lie in [2^-500, 2^500], so that
-  // nothing underflows or overflows; otherwise the key is NaN and the angle
-  // computed. pi - phi rounds monotonically. So the skipped dihedral angles
-  // lie strictly between computed ones, the folds below give the same doubles
-  // as folding all six, and y_i (a cross product and a square root) is
-  // computed only for the needed angles.
-  std::array<double, 4> n2{}, nn{}, inv{};
-  std::array<bool, 4> in_range{};
-  for (int k = 0; k < 4; ++k) {
-    n2[k] = norm2(n[k]);
-    nn[k] = std::sqrt(n2[k]);  // == norm(n[k])
-    in_range[k] = n2[k] >= 0x1p-500 && n2[k] <= 0x1p500;
-    inv[k] = 1.0 / nn[k];
-  }
-  static constexpr int kPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  std::array<double, 6> xs{}, key{};
-  for (int i = 0; i < 6; ++i) {
-    const int k = kPair[i][0], l = kPair[i][1];
-    xs[i] = dot(n[k], n[l]);
-    key[i] = in_range[k] && in_range[l] ? -(xs[i] * inv[k]) * inv[l] : std::numeric_limits<double>::quiet_NaN();
-  }
-  constexpr double kCosGap = 0x1p-20;
-  const auto pick = extreme_candidates<6>(key, [](double below, double above) { return below + kCosGap <= above; });
+  // The folds over the angles `pick` needs give the same doubles as folding all six.
   double min_dihedral = kInf, max_dihedral = 0.0;
   for (int i = 0; i < 6; ++i) {
-    if (!pick.needed[i]) continue;
-    const double ys = norm(cross(n[kPair[i][0]], n[kPair[i][1]]));  // angle_between's atan2 arguments
-    // atan2(y, +-0) is pi/2 rounded for every y > 0 (C Annex F): the right
-    // dihedral angles of the grid tetrahedra skip the call.
-    const double phi = xs[i] == 0 && ys > 0 ? std::numbers::pi / 2 : std::atan2(ys, xs[i]);
-    const double theta = std::numbers::pi - phi;
+    if (!s.pick.needed[i]) continue;
+    const double theta = dihedral_angle(s, i);
     min_dihedral = std::min(min_dihedral, theta);
     max_dihedral = std::max(max_dihedral, theta);
   }
   q.min_dihedral_deg = min_dihedral * kDeg;
   q.max_dihedral_deg = max_dihedral * kDeg;
 
-  const double faces = 0.5 * (nn[0] + nn[1] + nn[2] + nn[3]);
+  const double faces = 0.5 * (s.nn[0] + s.nn[1] + s.nn[2] + s.nn[3]);
   const double r = 3.0 * std::abs(q.volume) / faces;
   double circum = kInf;
   CircumFrame frame{n, u, {}, det};  // the same doubles circum_frame(a, b, c, d) gives
@@ -469,35 +500,18 @@ double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 
 double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign orientation) {
   if (orientation == Sign::Zero) return 0.0;
-  const Vec3 u = b - a, v = c - a, w = d - a;
-  const std::array<Vec3, 4> n = {cross(d - b, c - b), cross(v, w), cross(w, u), cross(u, v)};
-  // tet_core's normals and keys. The smallest dihedral angle is pi minus the
-  // largest angle phi between normals; the keys increase with phi, so (as in
-  // extreme_candidates) only the last largest key hi and the keys not
-  // separated from it can give the largest computed phi: every other angle's
-  // computed phi is strictly below hi's, and pi - phi rounds monotonically.
-  std::array<double, 4> n2{}, inv{};
-  std::array<bool, 4> in_range{};
-  for (int k = 0; k < 4; ++k) {
-    n2[k] = norm2(n[k]);
-    in_range[k] = n2[k] >= 0x1p-500 && n2[k] <= 0x1p500;
-    inv[k] = 1.0 / std::sqrt(n2[k]);
-  }
-  static constexpr int kPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  std::array<double, 6> xs{}, key{};
-  for (int i = 0; i < 6; ++i) {
-    const int k = kPair[i][0], l = kPair[i][1];
-    xs[i] = dot(n[k], n[l]);
-    key[i] = in_range[k] && in_range[l] ? -(xs[i] * inv[k]) * inv[l] : std::numeric_limits<double>::quiet_NaN();
-  }
-  constexpr double kCosGap = 0x1p-20;
-  const auto pick = extreme_candidates<6>(key, [](double below, double above) { return below + kCosGap <= above; });
+  // tet_core's normals and keys (dihedral_keys). The smallest dihedral angle
+  // is pi minus the largest angle phi between normals; the keys increase with
+  // phi, so (as in extreme_candidates) only the last largest key hi and the
+  // keys not separated from it can give the largest computed phi: every other
+  // angle's computed phi is strictly below hi's, and pi - phi rounds
+  // monotonically.
+  const DihedralKeys s = dihedral_keys(a, b, c, d);
+  const int hi = s.pick.hi;
   double min_dihedral = kInf;
   for (int i = 0; i < 6; ++i) {
-    if (!pick.needed[i] || (i != pick.hi && key[i] + kCosGap <= key[pick.hi])) continue;
-    const double ys = norm(cross(n[kPair[i][0]], n[kPair[i][1]]));
-    const double phi = xs[i] == 0 && ys > 0 ? std::numbers::pi / 2 : std::atan2(ys, xs[i]);
-    min_dihedral = std::min(min_dihedral, std::numbers::pi - phi);
+    if (!s.pick.needed[i] || (i != hi && s.key[i] + kCosGap <= s.key[hi])) continue;
+    min_dihedral = std::min(min_dihedral, dihedral_angle(s, i));
   }
   return min_dihedral * kDeg;
 }
