@@ -8,6 +8,7 @@
 
 #include "improve3d/permutation.hpp"
 #include "improve3d/smooth.hpp"
+#include "improve3d/worst_first.hpp"
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
 #include "quality/tetrahedron_min_dihedral.hpp"
@@ -37,14 +38,7 @@ Flipper::Flipper(CollapseMesh& mesh, const SizeBound& size, double aspect_cap)
 
 std::int64_t Flipper::pass() {
   created_.clear();
-  std::vector<std::pair<double, int>> order;
-  for (int t = 0; t < mesh_.tet_count(); ++t)
-    if (mesh_.tet(t)[0] >= 0 && mesh_.dihedral(t) < kWorkBelowDihedral) order.emplace_back(mesh_.dihedral(t), t);
-  std::sort(order.begin(), order.end());
-  std::int64_t flips = 0;
-  for (const auto& [key, t] : order)
-    if (mesh_.tet(t)[0] >= 0 && try_tet(t)) ++flips;
-  return flips;
+  return visit_worst_first(mesh_, [this](int t) { return try_tet(t); });
 }
 
 bool Flipper::try_tet(int t) {

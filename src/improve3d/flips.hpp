@@ -34,9 +34,10 @@
 //   5. their minimum dihedral angle exceeds the old ones' by at least
 //      kMinDihedralGain (smooth.hpp): strict progress, so the passes end.
 // Order: a pass visits the live tetrahedra whose minimum dihedral angle is
-// below kWorkBelowDihedral (smooth.hpp), smallest first, ties by id; at each it evaluates the edge removals of
-// its six edges and the 2-3 flips of its four faces, in that enumeration order, and
-// does the best accepted one (largest new minimum dihedral, ties: the first).
+// below kWorkBelowDihedral (smooth.hpp), smallest first, ties by id
+// (worst_first.hpp); at each it evaluates the edge removals of its six edges
+// and the 2-3 flips of its four faces, in that enumeration order, and does
+// the best accepted one (largest new minimum dihedral, ties: the first).
 // New tetrahedra and boundary triangles get new ids (collapse_mesh.hpp); new
 // tetrahedra wait for the next pass. Rules 1, 3, 4 and 5 are decided once per
 // candidate tetrahedron (rule 5 as a floor on each new tetrahedron's angle:

@@ -1,30 +1,25 @@
 // ImprovingCollapses (improving_collapse.hpp).
 #include "improve3d/improving_collapse.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 
-#include "improve3d/smooth.hpp"
+#include "improve3d/worst_first.hpp"
 
 namespace pqmesh::improve3d::detail {
 
 std::int64_t ImprovingCollapses::pass() {
   collapser_.forget();
-  std::vector<std::pair<double, int>> order;
-  for (int t = 0; t < mesh_.tet_count(); ++t)
-    if (mesh_.tet(t)[0] >= 0 && mesh_.dihedral(t) < kWorkBelowDihedral) order.emplace_back(mesh_.dihedral(t), t);
-  std::sort(order.begin(), order.end());
-  std::int64_t collapses = 0;
-  for (const auto& [key, t] : order) {
-    if (mesh_.tet(t)[0] < 0) continue;
-    const std::array<int, 4> k = mesh_.tet(t);
-    bool done = false;
-    for (std::size_t i = 0; i < 4 && !done; ++i)
-      for (std::size_t j = i + 1; j < 4 && !done; ++j) done = collapse_edge(k[i], k[j]);
-    if (done) ++collapses;
-  }
-  return collapses;
+  return visit_worst_first(mesh_, [this](int t) { return collapse_tet(t); });
+}
+
+// The first of t's six edges, in the order (0 1) (0 2) (0 3) (1 2) (1 3) (2 3), that collapses.
+bool ImprovingCollapses::collapse_tet(int t) {
+  const std::array<int, 4> k = mesh_.tet(t);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j)
+      if (collapse_edge(k[i], k[j])) return true;
+  return false;
 }
 
 // The lower class first (Coarsener::collapse_edge in improve.cpp), ties: the smaller id.

@@ -4,11 +4,11 @@
 // improvement operation), after smoothing and flips (improve.hpp).
 //
 // A pass visits the live tetrahedra whose minimum dihedral angle is below
-// kWorkBelowDihedral (smooth.hpp), smallest first, ties by id; for each still
-// alive it tries its six edges in the order (0 1) (0 2) (0 3) (1 2) (1 3)
-// (2 3), each as the coarsening passes do (the end of the lower vertex class
-// deleted first, ties: the smaller id; then the other way), and stops at the
-// first collapse done.
+// kWorkBelowDihedral (smooth.hpp), smallest first, ties by id
+// (worst_first.hpp); for each still alive it tries its six edges in the order
+// (0 1) (0 2) (0 3) (1 2) (1 3) (2 3), each as the coarsening passes do (the
+// end of the lower vertex class deleted first, ties: the smaller id; then the
+// other way), and stops at the first collapse done.
 // The collapser given is built with QualityLimits::min_dihedral = 180, so a
 // collapse is accepted by every rule of improve.hpp and, where the old region
 // (the tetrahedra of u and v) is within target_aspect, only when no new
@@ -35,6 +35,7 @@ class ImprovingCollapses {
   std::int64_t pass();
 
  private:
+  bool collapse_tet(int t);
   bool collapse_edge(int a, int b);
 
   CollapseMesh& mesh_;
