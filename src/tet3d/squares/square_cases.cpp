@@ -373,7 +373,7 @@ SquareCase SquareDispatcher::triangulate(const FaceSquare& s, const BoxFaces& fa
                                          std::vector<std::array<int, 3>>& out, Sign inside_hint) {
   const Incidence m = incidences(s, faces);
   if (faces.kind == BoxKind::Vertex) {
-    const std::vector<Incidence> pieces = plane_group_pieces(faces.apex, m);
+    const std::vector<Incidence> pieces = crease_pieces(faces.apex, m);
     if (!pieces.empty()) {
       for (const Incidence& piece : pieces) triangulate_incidence(s, faces, piece, out, inside_hint);
       ++counts_[static_cast<std::size_t>(SquareCase::Pieces)];

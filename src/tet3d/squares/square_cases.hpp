@@ -139,13 +139,19 @@ class SquareDispatcher {
   // different markers: one plane split into patches), each group sorted,
   // groups ordered by their smallest facet; every facet of v is in one.
   const std::vector<std::vector<int>>& plane_groups(int vertex);
-  // For a square of v's united box whose facets lie in two or more plane
-  // groups at v: one incidence per group (its facets and flat edges in m),
-  // when no crease edge of v is in m and every two of the groups meet at v
-  // in reflex creases only (so their pieces of S are disjoint: the
-  // exterior wedge of the crease lies between them). Empty otherwise,
-  // and always at a vertex without flat edges.
-  std::vector<Incidence> plane_group_pieces(int vertex, const Incidence& m);
+  // For a square of v's united box whose facets lie in two or more pieces
+  // at v: one incidence per piece (its facets and edges in m). The pieces are
+  // the plane groups met by m, joined across the creases of v in m; the split
+  // is made when every two of them meet at v in reflex creases only (so their
+  // parts of S are disjoint: the exterior wedge of the crease lies between
+  // them), or when each lies beyond the other's region (beyond_region).
+  // Empty otherwise.
+  std::vector<Incidence> crease_pieces(int vertex, const Incidence& m);
+  // Every facet of `piece` lies strictly outside, v excepted, the region of
+  // S that `other` (one facet, or one non-flat edge with its two facets) is
+  // triangulated as: P's side of the facet's plane, or the edge's wedge.
+  // Exact (orient3d on the facets' vertices); false for other incidences.
+  bool beyond_region(int vertex, const Incidence& piece, const Incidence& other);
 
   const FacetPlane& plane(int facet);
   const EdgeCone& cone(int edge);
