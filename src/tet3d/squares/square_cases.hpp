@@ -33,16 +33,17 @@
 //                                 piece S ∩ wedge(E) (a notch between two
 //                                 edges leaving the united box through S;
 //                                 conditions in separate_edge_pieces);
-//   M in several plane groups,    one piece per group, each triangulated by
-//     vertex box                  the rules above with the group's facets and
-//                                 flat edges (plane_group_pieces: the groups
-//                                 are the facets at v joined by flat edges,
-//                                 one plane split into marker patches, and
-//                                 every two of them meet at v in a reflex
-//                                 crease whose exterior wedge separates their
-//                                 pieces on S; the neighbour cells hold them
-//                                 as separate components,
-//                                 docs/algorithm/tet3d_boxes.md "Flat edges");
+//   M in several pieces,          one piece per plane group, groups joined
+//     vertex box                  across the creases in M, each triangulated
+//                                 by the rules above with its own facets and
+//                                 edges (crease_pieces: the groups are the
+//                                 facets at v joined by flat edges, one plane
+//                                 split into marker patches; every two
+//                                 pieces meet at v in reflex creases only, or
+//                                 lie beyond each other's regions, exact; the
+//                                 neighbour cells hold them as separate
+//                                 components, docs/algorithm/tet3d_boxes.md
+//                                 "Plane groups and crease pieces");
 //   anything else                 InternalError naming S and M (a P vertex in
 //                                 S, two facets without a common edge, two
 //                                 edges, ...: the octree's separation, §4.1.7,

@@ -129,7 +129,7 @@ TEST(FlatEdges, LPrismWithASplitSideAtItsReflexEdge) {
 TEST(FlatEdges, SquaresSplitByPlaneGroupsAtAVertex) {
   // Every-run seed 137 as triangles: squares of the united box of vertex 4
   // meet a flat edge's two facets and a third facet across a reflex crease,
-  // so plane_group_pieces splits them.
+  // so crease_pieces splits them.
   EXPECT_GT(mesh_every_run_seed_as_triangles(137).split_squares, 0);
 }
 
