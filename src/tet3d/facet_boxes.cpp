@@ -1,5 +1,6 @@
 #include "tet3d/facet_boxes.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <set>
@@ -183,8 +184,13 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // built (the candidates and a mesh are a large part of the peak memory);
     // when that table loses, the final pass below remakes this mesh.
     bool wider_won = false;
+    // When the wider table loses: the per-job worst shapes of the dropped
+    // trial, which is all the worst-box freeze reads of it.
+    std::vector<double> clean_shapes;
     if (done && warps.out_of_face_left > 0) {
-      const double worst_before = done->worst_shape();
+      clean_shapes = done->job_worst_shapes(jobs.size());
+      const double worst_before =
+          clean_shapes.empty() ? 0.0 : *std::max_element(clean_shapes.begin(), clean_shapes.end());
       done.reset();
       release_free_heap();
       WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs),
@@ -201,6 +207,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
         if (trial->bad().empty() && trial->worst_shape() < worst_before) {
           done = std::move(trial);
           wider_won = true;
+          clean_shapes.clear();
         } else {
           trial.reset();
           std::swap(warps, wider);
@@ -214,7 +221,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     for (const auto& [g, axes] : second_only) notes.held.insert(g);
     if (hooks.freeze_worst_box) {
       const WarpRecipe recipe{hooks.reflex_copies, edge_boxes, &second_only, wider_won};
-      const WorstBoxFreeze freeze = freeze_worst_boxes(pass, recipe, warps, frozen, done);
+      const WorstBoxFreeze freeze = freeze_worst_boxes(pass, recipe, warps, frozen, done, std::move(clean_shapes));
       worst_box_rounds = freeze.rounds;
       notes.unfrozen_worst_job = freeze.unfrozen_worst_job;
     }

@@ -29,17 +29,22 @@ std::vector<GridPoint> moved_in_box(const WarpTable& warps, const JobBoxes& boxe
 }  // namespace
 
 WorstBoxFreeze freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
-                                  std::unique_ptr<BoxAssembler>& done) {
-  if (!done) {
-    done = full_trial(pass, warps);
-    if (!done->bad().empty()) {  // not the caller's clean table: leave it to the final pass
-      done.reset();
-      return {};
+                                  std::unique_ptr<BoxAssembler>& done, std::vector<double> job_shapes) {
+  std::vector<double> shapes = std::move(job_shapes);
+  if (shapes.empty()) {
+    if (!done) {
+      done = full_trial(pass, warps);
+      if (!done->bad().empty()) {  // not the caller's clean table: leave it to the final pass
+        done.reset();
+        return {};
+      }
     }
+    shapes = done->job_worst_shapes(pass.jobs.size());
   }
-  if (done->worst_shape() <= kFlatWorst) return {};
-  std::vector<double> shapes = done->job_worst_shapes(pass.jobs.size());
+  // The mesh's worst shape is the largest job's worst (every tetrahedron has
+  // a job; the shapes of a trial without inversions are finite).
   const auto first_worst = std::max_element(shapes.begin(), shapes.end());
+  if (first_worst == shapes.end() || *first_worst <= kFlatWorst) return {};
   const double start = *first_worst;
   const auto unfrozen_worst_job = static_cast<std::int32_t>(first_worst - shapes.begin());
   const JobBoxes boxes(pass.tree, pass.jobs);

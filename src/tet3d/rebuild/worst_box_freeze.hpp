@@ -16,6 +16,7 @@
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 #include "tet3d/rebuild/job_runs.hpp"
 #include "tet3d/rebuild/trial_scope.hpp"
@@ -48,11 +49,15 @@ struct WorstBoxFreeze {
 };
 
 // `done`: the trial of every job on `warps` (no inversions), or null when
-// the caller will remake it. On success `warps`, `frozen` and `done` are the
-// better table, its frozen set and its trial of every job; otherwise `warps`
-// and `frozen` are unchanged and `done` is null when the pass ran (the
-// caller remakes the mesh of `warps`).
+// the caller will remake it. `job_shapes`: when `done` is null, the worst
+// tet_shape per job of that trial (BoxAssembler::job_worst_shapes), taken by
+// the caller before it dropped the trial; empty otherwise (then a null `done`
+// is made here, one more trial of every job). On success `warps`, `frozen`
+// and `done` are the better table, its frozen set and its trial of every job;
+// otherwise `warps` and `frozen` are unchanged and `done` is null when the
+// pass ran or `job_shapes` were given (the caller remakes the mesh of
+// `warps`).
 WorstBoxFreeze freeze_worst_boxes(const BoxPass& pass, const WarpRecipe& recipe, WarpTable& warps, GridPointSet& frozen,
-                                  std::unique_ptr<BoxAssembler>& done);
+                                  std::unique_ptr<BoxAssembler>& done, std::vector<double> job_shapes = {});
 
 }  // namespace pqmesh::tet3d
