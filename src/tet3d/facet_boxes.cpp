@@ -115,6 +115,20 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     std::optional<JobBoxes> job_boxes;  // made at the first rebuild
     std::optional<WarpCandidates> candidates;
     std::vector<std::int32_t> scope;  // the partial trial's jobs
+    // The wider table (out_of_face, below) of the current frozen set and
+    // second passes.
+    auto wider_of = [&](const WarpCandidates& c) {
+      return warp_box_vertices(tree, corners, domain, c,
+                               {.frozen = &frozen,
+                                .reflex_copies = hooks.reflex_copies,
+                                .edge_boxes = edge_boxes,
+                                .second_only = &second_only,
+                                .out_of_face = true});
+    };
+    // The wider table of `warps`, made from the candidates before they are
+    // dropped for the full trial (a table is small beside the candidates);
+    // dropped at every rebuild.
+    std::optional<WarpTable> wider_ready;
     bool full = true;
     for (;;) {
       auto trial = full ? full_trial(pass, warps) : partial_trial(pass, warps, scope);
@@ -125,6 +139,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
           break;
         }
         full = true;
+        if (warps.out_of_face_left > 0) wider_ready = wider_of(*candidates);
         candidates.reset();
         release_free_heap();
         continue;
@@ -133,6 +148,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
         throw InternalError("tet3d: warp rebuild loop: tetrahedra of job " + std::to_string(trial->bad_jobs().front()) +
                             " still invert after " + std::to_string(rebuilds) + " rebuilds");
       ++rebuilds;
+      wider_ready.reset();
       // Edge boxes with an inverted cone get their faces through a close
       // box edge translated (warp.cpp, face translations; once per box) and
       // the table is rebuilt without freezing anything; when no such box is
@@ -180,9 +196,11 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // tables give valid meshes when the trial inverts nothing (exact orient3d);
     // the one with the better worst tetrahedron (tet_shape, only compared) is
     // kept, the table without those moves on a tie. Runs without such a move
-    // are unchanged. The finished trial is dropped before the other table is
-    // built (the candidates and a mesh are a large part of the peak memory);
-    // when that table loses, the final pass below remakes this mesh.
+    // are unchanged. The other table is made in the rebuild loop while its
+    // candidates live (`wider_ready`; from fresh candidates when the loop made
+    // none), and the finished trial is dropped before the other table's trial
+    // (a mesh is a large part of the peak memory); when that table loses, the
+    // final pass below remakes this mesh.
     bool wider_won = false;
     // When the wider table loses: the per-job worst shapes of the dropped
     // trial, which is all the worst-box freeze reads of it.
@@ -193,12 +211,9 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
           clean_shapes.empty() ? 0.0 : *std::max_element(clean_shapes.begin(), clean_shapes.end());
       done.reset();
       release_free_heap();
-      WarpTable wider = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs),
-                                          {.frozen = &frozen,
-                                           .reflex_copies = hooks.reflex_copies,
-                                           .edge_boxes = edge_boxes,
-                                           .second_only = &second_only,
-                                           .out_of_face = true});
+      WarpTable wider =
+          wider_ready ? std::move(*wider_ready) : wider_of(warp_candidates(tree, corners, domain, jobs));
+      wider_ready.reset();
       release_free_heap();
       if (wider.out_of_face > 0) {
         std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
