@@ -414,17 +414,31 @@ FirstPass first_pass(const WarpGeometry& geo, std::span<const FaceShift> shifts,
   std::vector<std::pair<int, int>> seen;  // (axis, edge)
   for (const int e : shifted_edges)
     for (int axis = 0; axis < 3; ++axis) seen.push_back({axis, e});
-  std::vector<std::pair<GridPoint, GridPoint>> segments;
-  segments.reserve(c.box_edges.size() + c.neighbours.size());
-  for (const BoxEdgeSpan& be : c.box_edges) segments.push_back(be.ends(c.p));
-  for (const GridPoint& w : c.neighbours) segments.push_back({std::min(c.p, w), std::max(c.p, w)});
+  // The box-edge pieces through p as (axis, end coordinates), made once for
+  // every P edge below (none without one).
+  struct Segment {
+    int axis;
+    Vec3 lo, hi;
+  };
+  std::vector<Segment> segments;
+  auto add_segment = [&](const GridPoint& lo, const GridPoint& hi) {
+    int axis = 0;
+    while (axis < 2 && lo.f[static_cast<std::size_t>(axis)] == hi.f[static_cast<std::size_t>(axis)]) ++axis;
+    segments.push_back({axis, grid_coordinates(geo.tree, lo), grid_coordinates(geo.tree, hi)});
+  };
+  if (!v.edges.empty()) {
+    segments.reserve(c.box_edges.size() + c.neighbours.size());
+    for (const BoxEdgeSpan& be : c.box_edges) {
+      const auto [lo, hi] = be.ends(c.p);
+      add_segment(lo, hi);
+    }
+    for (const GridPoint& w : c.neighbours) add_segment(std::min(c.p, w), std::max(c.p, w));
+  }
   for (const int e : v.edges) {
     const auto [ea, eb] = geo.edge_ends(e);
-    for (const auto& [lo, hi] : segments) {
-      int axis = 0;
-      while (axis < 2 && lo.f[static_cast<std::size_t>(axis)] == hi.f[static_cast<std::size_t>(axis)]) ++axis;
+    for (const auto& [axis, lo, hi] : segments) {
       if (std::find(seen.begin(), seen.end(), std::pair{axis, e}) != seen.end()) continue;
-      const auto [ps, pe] = closest_points(grid_coordinates(geo.tree, lo), grid_coordinates(geo.tree, hi), ea, eb);
+      const auto [ps, pe] = closest_points(lo, hi, ea, eb);
       if (!(norm(ps - pe) < h / 8)) continue;
       Vec3 d = cross(eb - ea, axis_unit(axis));
       double len = norm(d);
@@ -561,20 +575,33 @@ bool keeps_decisions(WarpGeometry& geo, const RingPoint& v, const WarpTable& tab
   return true;
 }
 
+// Where the table has put each neighbour w of v so far (its entry, else the
+// prewarped point), in neighbour order; empty when v has no P edge (the
+// clearances below read them only per edge).
+std::vector<Vec3> neighbour_ends(const WarpGeometry& geo, const RingPoint& v, const WarpTable& table) {
+  std::vector<Vec3> out;
+  if (v.edges.empty()) return out;
+  out.reserve(v.c.neighbours.size());
+  for (const GridPoint& w : v.c.neighbours) {
+    const Warp* ww = table.find(w);
+    out.push_back(ww != nullptr ? ww->at : grid_coordinates(geo.tree, w));
+  }
+  return out;
+}
+
 // How far z is from what warping moves v away from, as fractions of the
 // targets, each capped at 1: h/16 from each facet of v's boxes, h/8 between
-// each P edge between two of them and each ring segment [z, w] (w where the
-// table has put it so far). Contract: one entry per (facet), then per (edge,
+// each P edge between two of them and each ring segment [z, w] (w at
+// `ends`, neighbour_ends). Contract: one entry per (facet), then per (edge,
 // neighbour), in that order, so two calls compare entry by entry.
-std::vector<double> clearances(const WarpGeometry& geo, const RingPoint& v, const WarpTable& table, Vec3 z) {
+std::vector<double> clearances(const WarpGeometry& geo, const RingPoint& v, std::span<const Vec3> ends, Vec3 z) {
   const double h = v.h;
   std::vector<double> q;
   for (const int f : v.c.facets) q.push_back(std::min(1.0, facet_distance(geo.domain, f, z) / (h / 16)));
   for (const int e : v.edges) {
     const auto [ea, eb] = geo.edge_ends(e);
-    for (const GridPoint& w : v.c.neighbours) {
-      const Warp* ww = table.find(w);
-      const auto [zs, ze] = closest_points(z, ww != nullptr ? ww->at : grid_coordinates(geo.tree, w), ea, eb);
+    for (const Vec3& w : ends) {
+      const auto [zs, ze] = closest_points(z, w, ea, eb);
       q.push_back(std::min(1.0, norm(zs - ze) / (h / 8)));
     }
   }
@@ -586,7 +613,7 @@ std::vector<double> clearances(const WarpGeometry& geo, const RingPoint& v, cons
 // move without building its vector. Contract: the smallest entry when every
 // entry is at least q0's, nullopt at the first entry below it. Cost: at most
 // one clearances() call, less on a refusal.
-std::optional<double> clearance_if_no_worse(const WarpGeometry& geo, const RingPoint& v, const WarpTable& table,
+std::optional<double> clearance_if_no_worse(const WarpGeometry& geo, const RingPoint& v, std::span<const Vec3> ends,
                                             Vec3 z, const std::vector<double>& q0) {
   const double h = v.h;
   double smallest = 1.0;
@@ -599,9 +626,8 @@ std::optional<double> clearance_if_no_worse(const WarpGeometry& geo, const RingP
     if (!take(std::min(1.0, facet_distance(geo.domain, f, z) / (h / 16)))) return std::nullopt;
   for (const int e : v.edges) {
     const auto [ea, eb] = geo.edge_ends(e);
-    for (const GridPoint& w : v.c.neighbours) {
-      const Warp* ww = table.find(w);
-      const auto [zs, ze] = closest_points(z, ww != nullptr ? ww->at : grid_coordinates(geo.tree, w), ea, eb);
+    for (const Vec3& w : ends) {
+      const auto [zs, ze] = closest_points(z, w, ea, eb);
       if (!take(std::min(1.0, norm(zs - ze) / (h / 8)))) return std::nullopt;
     }
   }
@@ -773,13 +799,16 @@ bool shortened_move(WarpGeometry& geo, const RingPoint& v, WarpTable& table, Mov
     if (len > 0) refused.push_back({v.x0 + (v.h / 16 / len) * away, -1});
   }
   bool ok = false;
-  const std::vector<double> q0 = clearances(geo, v, table, v.x0);
+  // The table does not change during the search: the neighbours' places
+  // are looked up once.
+  const std::vector<Vec3> ends = neighbour_ends(geo, v, table);
+  const std::vector<double> q0 = clearances(geo, v, ends, v.x0);
   double best = q0.empty() ? 1.0 : *std::min_element(q0.begin(), q0.end());
   for (double t = 1.0; t >= 1.0 / 16; t /= 2)
     for (std::size_t r = t == 1.0 ? first_line_move : 0; r < refused.size(); ++r) {
       const auto& [target, key_facet] = refused[r];
       const Vec3 z = v.x0 + t * (target - v.x0);
-      const std::optional<double> q = clearance_if_no_worse(geo, v, table, z, q0);
+      const std::optional<double> q = clearance_if_no_worse(geo, v, ends, z, q0);
       if (!q || !(*q > best) || !keeps_decisions(geo, v, table, z)) continue;
       best = *q;
       move.at = z;
