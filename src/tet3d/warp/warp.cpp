@@ -198,6 +198,45 @@ bool on_line(const FaceShift& f, const GridPoint& p) {
   return same == 2;
 }
 
+// The face translations with an index by face plane, (n, at): the shifts
+// whose plane holds a grid point p are the only ones for which on_face or
+// on_line can hold (l lies in its face's plane), found by three binary
+// searches. Edge boxes accumulate over the rebuild loop's rounds (one per
+// inverted cone), so a scan of every shift for every ring point grew with
+// the product of the two (rotor.off: half of the box stage).
+class FaceShifts {
+ public:
+  explicit FaceShifts(std::vector<FaceShift> list) : list_(std::move(list)) {
+    by_plane_.reserve(list_.size());
+    for (std::size_t i = 0; i < list_.size(); ++i) by_plane_.push_back({list_[i].n, list_[i].at, i});
+    std::sort(by_plane_.begin(), by_plane_.end());
+  }
+  std::vector<FaceShift>& list() { return list_; }
+  const std::vector<FaceShift>& list() const { return list_; }
+  // The indices of the shifts whose face plane holds p, ascending (the
+  // order of `list`).
+  void on_planes_of(const GridPoint& p, std::vector<std::size_t>& out) const {
+    out.clear();
+    for (int n = 0; n < 3; ++n) {
+      const PlaneKey lo{n, p.f[static_cast<std::size_t>(n)], 0};
+      for (auto it = std::lower_bound(by_plane_.begin(), by_plane_.end(), lo);
+           it != by_plane_.end() && it->n == lo.n && it->at == lo.at; ++it)
+        out.push_back(it->index);
+    }
+    std::sort(out.begin(), out.end());
+  }
+
+ private:
+  struct PlaneKey {
+    int n = 0;
+    std::int64_t at = 0;
+    std::size_t index = 0;
+    friend auto operator<=>(const PlaneKey&, const PlaneKey&) = default;
+  };
+  std::vector<FaceShift> list_;
+  std::vector<PlaneKey> by_plane_;  // sorted
+};
+
 // Step "find the face translations" (docs/algorithm/tet3d_warp.md "Face
 // translations"). Purpose: for every edge box B and each of its twelve box
 // edges l closer than h_B/8 to B's P edge E (E not parallel to l), the faces
@@ -254,16 +293,19 @@ std::vector<FaceShift> find_face_shifts(const WarpGeometry& geo, std::span<const
 // `candidates`, increasing; a shift whose l holds no such point keeps h =
 // INFINITY (not translated).
 std::vector<std::vector<std::size_t>> measure_face_shifts(const WarpGeometry& geo, const WarpCandidates& candidates,
-                                                          std::vector<FaceShift>& shifts) {
+                                                          FaceShifts& face_shifts) {
+  std::vector<FaceShift>& shifts = face_shifts.list();
   std::vector<std::vector<std::size_t>> face_points(shifts.size());
   if (shifts.empty()) return face_points;
+  std::vector<std::size_t> on_planes;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const WarpCandidate& c = candidates[i];
     if (c.facets.empty() || !c.square_corners.empty()) continue;
     const std::int32_t level = std::max(c.level, geo.corners.finest_level(c.p));
     if (level < 0) continue;
     const double hc = std::ldexp(geo.tree.side(0), -level);
-    for (std::size_t s = 0; s < shifts.size(); ++s) {
+    face_shifts.on_planes_of(c.p, on_planes);
+    for (const std::size_t s : on_planes) {
       if (on_line(shifts[s], c.p)) shifts[s].h = std::min(shifts[s].h, hc);
       if (on_face(shifts[s], c.p)) face_points[s].push_back(i);
     }
@@ -353,10 +395,13 @@ void fit_face_shifts(WarpGeometry& geo, const WarpCandidates& candidates,
 // largest of the shifts, summed. Contract: appends to shifted_edges the P
 // edges it answers for (their line moves are not added again by the first
 // pass), in the order of `shifts`, each once.
-Vec3 face_move(std::span<const FaceShift> shifts, const GridPoint& p, std::vector<int>& shifted_edges) {
+Vec3 face_move(const FaceShifts& shifts, const GridPoint& p, std::vector<int>& shifted_edges) {
   Vec3 total;
   std::vector<std::pair<std::array<std::int64_t, 3>, Vec3>> best;  // (n, at, edge) -> move
-  for (const FaceShift& f : shifts) {
+  std::vector<std::size_t> on_planes;
+  shifts.on_planes_of(p, on_planes);
+  for (const std::size_t s : on_planes) {
+    const FaceShift& f = shifts.list()[s];
     if (!(f.h < INFINITY) || !on_face(f, p)) continue;
     const Vec3 m = (f.h / 8) * f.unit;
     const std::array<std::int64_t, 3> key{f.n, f.at, f.edge};
@@ -405,7 +450,7 @@ struct FirstPass {
   bool moved = false;
 };
 
-FirstPass first_pass(const WarpGeometry& geo, std::span<const FaceShift> shifts, const RingPoint& v,
+FirstPass first_pass(const WarpGeometry& geo, const FaceShifts& shifts, const RingPoint& v,
                      WarpTable& table) {
   const WarpCandidate& c = v.c;
   const double h = v.h;
@@ -854,7 +899,7 @@ void settle_move(WarpGeometry& geo, const RingPoint& v, const FirstPass& fp, con
 // (options.second_only) takes warp_reported_point; a point in a reflex slot
 // takes its copies (options.reflex_copies; without them it keeps its full
 // move's fallbacks and counts reflex_left); every other one settle_move.
-void warp_ring_point(WarpGeometry& geo, std::span<const FaceShift> shifts, const WarpCandidate& c,
+void warp_ring_point(WarpGeometry& geo, const FaceShifts& shifts, const WarpCandidate& c,
                      const WarpOptions& options, WarpTable& table) {
   const Vec3 x0 = grid_coordinates(geo.tree, c.p);
   const std::int32_t level = std::max(c.level, geo.corners.finest_level(c.p));
@@ -936,9 +981,9 @@ void warp_square_centres(WarpGeometry& geo, const WarpCandidates& candidates, co
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             const WarpCandidates& candidates, const WarpOptions& options) {
   WarpGeometry geo(tree, corners, domain);
-  std::vector<FaceShift> shifts = find_face_shifts(geo, options.edge_boxes);
+  FaceShifts shifts(find_face_shifts(geo, options.edge_boxes));
   const std::vector<std::vector<std::size_t>> face_points = measure_face_shifts(geo, candidates, shifts);
-  fit_face_shifts(geo, candidates, face_points, shifts);
+  fit_face_shifts(geo, candidates, face_points, shifts.list());
   WarpTable table;
   for (const WarpCandidate& c : candidates)
     if (!c.facets.empty() && c.square_corners.empty()) warp_ring_point(geo, shifts, c, options, table);
