@@ -202,8 +202,8 @@ bool on_line(const FaceShift& f, const GridPoint& p) {
 // whose plane holds a grid point p are the only ones for which on_face or
 // on_line can hold (l lies in its face's plane), found by three binary
 // searches. Edge boxes accumulate over the rebuild loop's rounds (one per
-// inverted cone), so a scan of every shift for every ring point grew with
-// the product of the two (rotor.off: half of the box stage).
+// inverted cone), so a scan of every shift for every ring point would grow
+// with the product of the two (rotor.off: half of its box stage).
 class FaceShifts {
  public:
   explicit FaceShifts(std::vector<FaceShift> list) : list_(std::move(list)) {
