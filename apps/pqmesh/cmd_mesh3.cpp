@@ -180,6 +180,7 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << (run.options.generic_grid ? "generic, planes shifted by " +
                                                fmt(Vec3{s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]})
                                          : std::string("aligned"))
+            << (s.grid_shift > 0 ? " (offset " + std::to_string(s.grid_shift + 1) + ")" : std::string())
             << "; root side " << fmt(s.root_size) << ", depth " << s.depth << '\n';
   print_octree_line(domain, s);
   std::cout << "leaves     " << s.leaves << ":";

@@ -192,6 +192,7 @@ struct TetMeshStats {
   int depth = 0;                                          // deepest leaf level
   double root_size = 0;
   std::array<double, 3> grid_offset{};                    // the generic grid's shift (0 when aligned)
+  int grid_shift = 0;  // which of the generic grid's offsets (0 the first; mesh3d.md "Light construction first")
   double seconds_octree = 0, seconds_classify = 0, seconds_tetrahedra = 0, seconds_boundary = 0;
 };
 

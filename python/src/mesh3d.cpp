@@ -35,7 +35,8 @@ py::dict stats_dict(const TetMeshStats& s) {
                   py::arg("min_dihedral_target") = s.min_dihedral_target,
                   py::arg("improve_failure") = s.improve_failure,
                   py::arg("depth") = s.depth, py::arg("root_size") = s.root_size,
-                  py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]));
+                  py::arg("grid_offset") = py::make_tuple(s.grid_offset[0], s.grid_offset[1], s.grid_offset[2]),
+                  py::arg("grid_shift") = s.grid_shift);
 }
 
 py::object run_tet_mesh(std::shared_ptr<Domain3> domain, double max_size, py::object size_field, bool generic_grid,

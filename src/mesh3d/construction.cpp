@@ -46,6 +46,7 @@ mv3d::OctreeOptions octree_options(const TetMeshOptions& options, const OctreeVa
   oo.separate_edges = variant.faces.edges;
   oo.separate_facets = variant.faces.facets;
   oo.generic_grid = options.generic_grid;
+  oo.grid_shift = variant.grid_shift;
   return oo;
 }
 
@@ -123,6 +124,7 @@ Construction construct(const Domain3& domain, const TetMeshOptions& options, con
     options.progress(progress);
   };
   s.extended_margin = variant.extended_margin;
+  s.grid_shift = variant.grid_shift;
   s.separated = variant.thesis();
   s.separated_faces = variant.faces.count();
 

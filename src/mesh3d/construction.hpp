@@ -17,11 +17,14 @@ namespace pqmesh::mesh3d {
 // sides (mv3d::OctreeOptions::extended_margin; the thesis's 2, or 1) and the
 // separating splits (§4.1.7 steps 6 and 9): none (separate false), those of
 // the leaves holding a face of `faces`, or, with `faces` empty, every edge and
-// facet box's. thesis(): margin 2 and every separating split.
+// facet box's. grid_shift: the generic grid's offset number
+// (mv3d::OctreeOptions::grid_shift). thesis(): margin 2 and every separating
+// split.
 struct OctreeVariant {
   int extended_margin = 2;
   bool separate = false;
   FaceFlags faces;
+  int grid_shift = 0;
   bool thesis() const { return extended_margin == 2 && separate && faces.edges.empty() && faces.facets.empty(); }
 };
 

@@ -38,10 +38,12 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 // Why a construction's mesh is not kept (TetSeparation::Adaptive): some
 // leaf without a box job, the checker (pqmesh/check.hpp), or the aspect bound.
 // `why` is empty when it is kept; separate_near: the review names the faces
-// the next octree should separate near (not for the checker).
+// the next octree should separate near (not for the checker); over_bound:
+// the aspect bound failed.
 struct Verdict {
   std::string why;
   bool separate_near = false;
+  bool over_bound = false;
 };
 
 Verdict verdict(const Domain3& domain, const Construction& c, double alpha) {
@@ -51,7 +53,7 @@ Verdict verdict(const Domain3& domain, const Construction& c, double alpha) {
   if (c.review.max_aspect * alpha <= kMeasuredAspectAlphaC) return {};
   return {"max aspect ratio " + std::to_string(c.review.max_aspect) + " above C / alpha = " +
               std::to_string(kMeasuredAspectAlphaC / alpha),
-          true};
+          true, true};
 }
 
 // One construction of the adaptive ladder and what became of it: kept, or
@@ -79,11 +81,15 @@ Attempt attempt(const Domain3& domain, const TetMeshOptions& options, const Octr
 }
 
 // TetSeparation::Adaptive, lightest first: extended boxes of margin 1 without
-// separating splits; then margin 2 (the thesis's ex(b)) without them; then up
-// to kLocalRounds octrees separated near the faces the reviews name (the set
-// grows each round). The first mesh kept is returned, with the reason the
-// last dropped one was dropped and the time the dropped ones cost. None kept:
-// `rejected` says why the last was dropped.
+// separating splits; when its worst tetrahedron is above the aspect bound,
+// the same octree rules on the generic grid's next offset (a box corner
+// within a sliver of a facet it cannot be warped off stays a corner in every
+// finer octree of the same grid; another offset puts the planes elsewhere);
+// then margin 2 (the thesis's ex(b)) without them; then up to kLocalRounds
+// octrees separated near the faces the reviews name (the set grows each
+// round). The first mesh kept is returned, with the reason the last dropped
+// one was dropped and the time the dropped ones cost. None kept: `rejected`
+// says why the last was dropped.
 constexpr int kLocalRounds = 2;
 
 std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions& options, double alpha,
@@ -100,6 +106,8 @@ std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions
     return a;
   };
   if (Attempt a = run(OctreeVariant{1, false, {}}); a.kept) return std::move(a.kept);
+  else if (a.verdict.over_bound)
+    if (Attempt b = run(OctreeVariant{1, false, {}, 1}); b.kept) return std::move(b.kept);
   OctreeVariant variant{2, false, {}};
   for (int round = 0; round <= kLocalRounds; ++round) {
     Attempt a = run(variant);

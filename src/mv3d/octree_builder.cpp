@@ -18,8 +18,9 @@ namespace pqmesh::mv3d {
 namespace {
 
 // The aligned root (choose_root_cube), or with generic_grid the shifted root
-// of choose_generic_root_cube over every input vertex coordinate.
-RootCube<3> root_for(const Domain3& d, bool generic) {
+// of choose_generic_root_cube over every input vertex coordinate, offset
+// number `shift`.
+RootCube<3> root_for(const Domain3& d, bool generic, int shift) {
   const std::array<double, 3> lo{d.bbox_min.x, d.bbox_min.y, d.bbox_min.z};
   const std::array<double, 3> hi{d.bbox_max.x, d.bbox_max.y, d.bbox_max.z};
   if (!generic) return choose_root_cube<3>(lo, hi);
@@ -30,7 +31,7 @@ RootCube<3> root_for(const Domain3& d, bool generic) {
     coords[1].push_back(p.y);
     coords[2].push_back(p.z);
   }
-  return choose_generic_root_cube<3>(lo, hi, {coords[0], coords[1], coords[2]}, kTreeMaxLevel).root;
+  return choose_generic_root_cube<3>(lo, hi, {coords[0], coords[1], coords[2]}, kTreeMaxLevel, shift).root;
 }
 
 Vec3 centre_of(const Cube& c) { return 0.5 * (c.lo + c.hi); }
@@ -93,7 +94,7 @@ bool share_triangle(const NodeData3& a, const NodeData3& b) {
 OctreeBuilder::OctreeBuilder(const Domain3& domain, OctreeOptions options)
     : domain_(domain),
       options_(std::move(options)),
-      tree_(root_for(domain, options_.generic_grid)),
+      tree_(root_for(domain, options_.generic_grid, options_.grid_shift)),
       facet_pair_edges_(domain) {
   // The tree must honour RootCube::offset: its root planes are origin + offset.
   // (A Tree without offset support would silently mesh on the aligned grid.)

@@ -112,6 +112,9 @@ struct OctreeOptions {
   // tree may use. Off by default (the aligned grid; the existing octree tests
   // use it).
   bool generic_grid = false;
+  // With generic_grid: which offset (choose_generic_root_cube's `shift`; 0
+  // the default). Another shift moves every box plane relative to the input.
+  int grid_shift = 0;
 };
 
 struct NodeData3 {

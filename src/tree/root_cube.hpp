@@ -106,8 +106,9 @@ RootCube<D> choose_root_cube(const std::array<double, D>& lo, const std::array<d
 // floating-point estimate of n are compared as exact doubles (the estimate is
 // off by less than 1).
 //
-// Offsets. off/S = the fraction of (a + 1) * 0.6180339887498949 (the golden
-// ratio's fraction, a double constant: the same on every machine) scaled to
+// Offsets. off/S = the fraction of (a + 1 + 3 * shift) * 0.6180339887498949
+// (the golden ratio's fraction, a double constant: the same on every machine;
+// `shift` numbers alternative offsets, 0 the default) scaled to
 // [0, 1/32), rounded down to a multiple of 2g, plus g: its coarse bits place
 // dyadic coordinates at irregular positions inside the boxes of every level,
 // not at a tiny distance from a plane. If a coordinate is an odd multiple of
@@ -143,11 +144,14 @@ inline bool on_generic_plane(double c, double origin, double off, int ge) {
 }  // namespace detail
 
 // coords[a]: every input coordinate along axis a. `deepest`: the finest level
-// a tree may use (kTreeMaxLevel). Throws InternalError for non-finite input or
-// when no candidate is found.
+// a tree may use (kTreeMaxLevel). `shift` (>= 0): which offset sequence
+// (above); distinct shifts put the box planes at unrelated places relative
+// to the input. Throws InternalError for non-finite input or when no
+// candidate is found.
 template <int D>
 GenericRoot<D> choose_generic_root_cube(const std::array<double, D>& lo, const std::array<double, D>& hi,
-                                        const std::array<std::span<const double>, D>& coords, int deepest) {
+                                        const std::array<std::span<const double>, D>& coords, int deepest,
+                                        int shift = 0) {
   constexpr double kGolden = 0.6180339887498949;
   for (int a = 0; a < D; ++a)
     for (const double c : coords[a])
@@ -176,7 +180,7 @@ GenericRoot<D> choose_generic_root_cube(const std::array<double, D>& lo, const s
       out.candidate = j;
       bool ok = true;
       for (int a = 0; a < D && ok; ++a) {
-        const double x = static_cast<double>(a + 1) * kGolden;
+        const double x = static_cast<double>(a + 1 + 3 * shift) * kGolden;
         const double frac = x - std::floor(x);  // in [0, 1)
         // K = 2 * floor(frac / 32 * 2^(level + 1)) + 1: off = K * g < S / 32.
         const double half_units = std::floor(std::ldexp(frac, level + 1 - 5));

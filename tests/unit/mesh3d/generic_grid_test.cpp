@@ -37,8 +37,9 @@ Coords coords_of(const Plc3& plc) {
   return c;
 }
 
-GenericRoot<3> choose(const Coords& c, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
-  return choose_generic_root_cube<3>(lo, hi, {std::span<const double>(c[0]), c[1], c[2]}, kTreeMaxLevel);
+GenericRoot<3> choose(const Coords& c, const std::array<double, 3>& lo, const std::array<double, 3>& hi,
+                      int shift = 0) {
+  return choose_generic_root_cube<3>(lo, hi, {std::span<const double>(c[0]), c[1], c[2]}, kTreeMaxLevel, shift);
 }
 
 // Exact: x - (origin + off) is not an integer multiple of the spacing of the
@@ -79,6 +80,11 @@ TEST(GenericGrid, NoCorpusCoordinateOnAPlane) {
                 entry.path().filename().string().c_str(), g.root.size, g.max_level, g.candidate, g.root.offset[0],
                 g.root.offset[1], g.root.offset[2]);
     expect_generic(entry.path().filename().string(), c, g, lo, hi);
+    // The second offset (the adaptive ladder's second rung) is generic too,
+    // and its planes differ from the first's on every axis.
+    const GenericRoot<3> g2 = choose(c, lo, hi, 1);
+    expect_generic(entry.path().filename().string() + ", offset 2", c, g2, lo, hi);
+    for (int a = 0; a < 3; ++a) EXPECT_NE(g2.root.offset[a], g.root.offset[a]) << entry.path().filename().string();
     // The aligned grid of the same box puts corpus coordinates on planes
     // (that is why the generic grid exists): not asserted per model, counted.
     ++models;

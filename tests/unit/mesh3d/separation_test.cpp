@@ -18,6 +18,7 @@
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/alpha.hpp"
 #include "support/flat_edge_domains.hpp"
+#include "support/random_domains.hpp"
 #include "support/paths.hpp"
 
 namespace pqmesh {
@@ -109,6 +110,47 @@ TEST(AspectReview, NamesTheFacesNearTheTetrahedraAboveTheBound) {
   EXPECT_GT(h.review.over_bound.count(), 0);
   EXPECT_LT(h.review.over_bound.count(),
             static_cast<std::int64_t>(d.edges.size() + d.plc.facets.size()));  // not every face
+}
+
+// The ladder's second rung: the lightest octree's rules on the generic
+// grid's second offset (mesh3d.md "Light construction first"). Its planes are
+// elsewhere on every axis. What it makes is either a mesh that is valid and
+// within the bound, or a refusal of the box code (InternalError, which the
+// ladder catches before its next rung), never a mesh the checker rejects:
+// asserted on corpus models (all meshed) and random polyhedra (the box code's
+// refusals are its known limits, tet3d_boxes.md "Known limits").
+TEST(SecondOffset, ValidAndBoundedOrRefusedOnCorpusAndRandomPolyhedra) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TetMeshOptions o;
+  o.improve = false;
+  // True when the second offset's construction meshed `d`.
+  const auto second_offset_meshes = [&](const std::string& what, const Domain3& d) {
+    const double alpha = compute_alpha(d.plc).radians;
+    const mesh3d::Construction first = mesh3d::construct(d, o, mesh3d::OctreeVariant{1, false, {}}, alpha, t0);
+    try {
+      const mesh3d::Construction second = mesh3d::construct(d, o, mesh3d::OctreeVariant{1, false, {}, 1}, alpha, t0);
+      EXPECT_EQ(second.result.stats.grid_shift, 1) << what;
+      for (std::size_t a = 0; a < 3; ++a)
+        EXPECT_NE(first.result.stats.grid_offset[a], second.result.stats.grid_offset[a]) << what << " axis " << a;
+      if (!second.unsupported.empty()) return false;
+      expect_valid_and_bounded(what + ", second offset", d, second.result);
+      EXPECT_LE(second.review.max_aspect * alpha, kMeasuredAspectAlphaC) << what;
+      return true;
+    } catch (const InternalError& e) {
+      std::printf("%s, second offset: refused by the box code: %s\n", what.c_str(), e.what());
+      return false;
+    }
+  };
+  for (const char* name : {"cube.poly", "l_block.poly", "schoenhardt.poly", "cube_through_hole.poly"})
+    EXPECT_TRUE(second_offset_meshes(name, corpus(name))) << name;
+  int meshed = 0;
+  for (std::uint64_t seed = 1; seed <= 2; ++seed)
+    meshed += second_offset_meshes("random polyhedron " + std::to_string(seed),
+                                   make_domain(test::random_polyhedron(seed)))
+                  ? 1
+                  : 0;
+  std::printf("random polyhedra 1-2: %d meshed on the second offset\n", meshed);
+  EXPECT_GE(meshed, 1);
 }
 
 // Separating splits near a few faces only: more leaves than none, fewer than
