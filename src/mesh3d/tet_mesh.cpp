@@ -38,12 +38,13 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 // Why a construction's mesh is not kept (TetSeparation::Adaptive): some
 // leaf without a box job, the checker (pqmesh/check.hpp), or the aspect bound.
 // `why` is empty when it is kept; separate_near: the review names the faces
-// the next octree should separate near (not for the checker); over_bound:
-// the aspect bound failed.
+// the next octree should separate near (not for the checker); regrid: the
+// aspect bound failed or the box code refused a configuration (InternalError),
+// both local to where the box planes fall.
 struct Verdict {
   std::string why;
   bool separate_near = false;
-  bool over_bound = false;
+  bool regrid = false;
 };
 
 Verdict verdict(const Domain3& domain, const Construction& c, double alpha) {
@@ -75,16 +76,18 @@ Attempt attempt(const Domain3& domain, const TetMeshOptions& options, const Octr
   } catch (const MeshNotSupported& e) {  // the aligned grid's plan
     a.verdict = {e.what(), false};
   } catch (const InternalError& e) {
-    a.verdict = {e.what(), false};
+    a.verdict = {e.what(), false, true};
   }
   return a;
 }
 
 // TetSeparation::Adaptive, lightest first: extended boxes of margin 1 without
-// separating splits; when its worst tetrahedron is above the aspect bound,
-// the same octree rules on the generic grid's next offset (a box corner
-// within a sliver of a facet it cannot be warped off stays a corner in every
-// finer octree of the same grid; another offset puts the planes elsewhere);
+// separating splits; when its worst tetrahedron is above the aspect bound or
+// the box code refused one of its boxes, the same octree rules on the generic
+// grid's next offset (a box corner within a sliver of a facet it cannot be
+// warped off stays a corner in every finer octree of the same grid, and so
+// does a square the box code has no model for; another offset puts the
+// planes elsewhere);
 // then margin 2 (the thesis's ex(b)) without them; then up to kLocalRounds
 // octrees separated near the faces the reviews name (the set grows each
 // round). The first mesh kept is returned, with the reason the last dropped
@@ -106,7 +109,7 @@ std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions
     return a;
   };
   if (Attempt a = run(OctreeVariant{1, false, {}}); a.kept) return std::move(a.kept);
-  else if (a.verdict.over_bound)
+  else if (a.verdict.regrid)
     if (Attempt b = run(OctreeVariant{1, false, {}, 1}); b.kept) return std::move(b.kept);
   OctreeVariant variant{2, false, {}};
   for (int round = 0; round <= kLocalRounds; ++round) {
