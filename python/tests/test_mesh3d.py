@@ -96,6 +96,7 @@ def test_full_separation_builds_the_thesis_octree():
     assert_valid(thesis)
     assert not light.stats["separated"] and light.stats["separated_faces"] == 0
     assert light.stats["light_rejected"] == ""
+    assert light.stats["grid_shift"] == 0  # the first generic offset: nothing was dropped
     assert thesis.stats["separated"]
     # The constructions differ; the improvement may coarsen both to the same few tetrahedra.
     assert thesis.stats["constructed_tetrahedra"] > light.stats["constructed_tetrahedra"]
