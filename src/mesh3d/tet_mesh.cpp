@@ -84,13 +84,12 @@ Attempt attempt(const Domain3& domain, const TetMeshOptions& options, const Octr
 // TetSeparation::Adaptive, lightest first: extended boxes of margin 1 without
 // separating splits; when its worst tetrahedron is above the aspect bound or
 // the box code refused one of its boxes, the same octree rules on the generic
-// grid's next offset (a box corner within a sliver of a facet it cannot be
+// grid's second offset (a box corner within a sliver of a facet it cannot be
 // warped off stays a corner in every finer octree of the same grid, and so
 // does a square the box code has no model for; another offset puts the
-// planes elsewhere);
-// then margin 2 (the thesis's ex(b)) without them; then up to kLocalRounds
-// octrees separated near the faces the reviews name (the set grows each
-// round). The first mesh kept is returned, with the reason the last dropped
+// planes elsewhere); then margin 2 (the thesis's ex(b)) without separating
+// splits; then up to kLocalRounds octrees separated near the faces the
+// reviews name (the set grows each round). The first mesh kept is returned, with the reason the last dropped
 // one was dropped and the time the dropped ones cost. None kept: `rejected`
 // says why the last was dropped.
 constexpr int kLocalRounds = 2;
@@ -108,9 +107,10 @@ std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions
     }
     return a;
   };
-  if (Attempt a = run(OctreeVariant{1, false, {}}); a.kept) return std::move(a.kept);
-  else if (a.verdict.regrid)
-    if (Attempt b = run(OctreeVariant{1, false, {}, 1}); b.kept) return std::move(b.kept);
+  Attempt lightest = run(OctreeVariant{1, false, {}});
+  if (lightest.kept) return std::move(lightest.kept);
+  if (lightest.verdict.regrid)
+    if (Attempt shifted = run(OctreeVariant{1, false, {}, 1}); shifted.kept) return std::move(shifted.kept);
   OctreeVariant variant{2, false, {}};
   for (int round = 0; round <= kLocalRounds; ++round) {
     Attempt a = run(variant);
