@@ -51,7 +51,8 @@ CollapseMesh::CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facet
       has_tet_markers_(!mesh.tetrahedron_markers.empty()),
       has_face_markers_(!mesh.face_markers.empty()),
       live_tets_(static_cast<std::int64_t>(mesh.tetrahedra.size())),
-      live_vertices_(static_cast<std::int64_t>(mesh.vertices.size())) {
+      live_vertices_(static_cast<std::int64_t>(mesh.vertices.size())),
+      star_time_(mesh.vertices.size(), 1) {
   tets_of_vertex_.build(tets_, points_.size());
   faces_of_vertex_.build(faces_, points_.size());
   one_region_ = std::all_of(tet_markers_.begin(), tet_markers_.end(), [&](int m) { return m == tet_markers_.front(); });
@@ -74,6 +75,11 @@ void CollapseMesh::faces_of(int v, std::vector<int>& out) {
 }
 
 void CollapseMesh::apply(const Collapse& c) {
+  tick();
+  for (const int t : c.dying_tets) stamp(tets_[static_cast<std::size_t>(t)]);
+  for (const int t : c.moving_tets) stamp(tets_[static_cast<std::size_t>(t)]);
+  for (const int f : c.dying_faces) stamp(faces_[static_cast<std::size_t>(f)]);
+  for (const int f : c.moving_faces) stamp(faces_[static_cast<std::size_t>(f)]);
   for (const int t : c.dying_tets) tets_[static_cast<std::size_t>(t)][0] = -1;
   for (const int f : c.dying_faces) faces_[static_cast<std::size_t>(f)][0] = -1;
   for (std::size_t i = 0; i < c.moving_tets.size(); ++i) {
@@ -113,6 +119,9 @@ double CollapseMesh::min_dihedral() const {
 void CollapseMesh::move_vertex(int v, Vec3 p, std::span<const int> tets, std::span<const double> aspect,
                                std::span<const double> dihedral) {
   points_[static_cast<std::size_t>(v)] = p;
+  tick();
+  star_time_[static_cast<std::size_t>(v)] = time_;
+  for (const int t : tets) stamp(tets_[static_cast<std::size_t>(t)]);
   for (std::size_t i = 0; i < tets.size(); ++i) {
     aspect_[static_cast<std::size_t>(tets[i])] = aspect[i];
     dihedral_[static_cast<std::size_t>(tets[i])] = dihedral[i];
@@ -143,11 +152,15 @@ int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect
   aspect_.push_back(aspect);
   dihedral_.push_back(dihedral);
   for (const int x : k) tets_of_vertex_.append(x, std::span<const int>(&t, 1));
+  tick();
+  stamp(k);
   ++live_tets_;
   return t;
 }
 
 void CollapseMesh::remove_tet(int t) {
+  tick();
+  stamp(tets_[static_cast<std::size_t>(t)]);
   tets_[static_cast<std::size_t>(t)][0] = -1;  // dropped from the vertex segments when next walked
   --live_tets_;
 }
@@ -158,10 +171,14 @@ int CollapseMesh::add_face(const std::array<int, 3>& k, int marker, int facet) {
   face_markers_.push_back(marker);
   face_facets_.push_back(facet);
   for (const int x : k) faces_of_vertex_.append(x, std::span<const int>(&f, 1));
+  tick();
+  stamp(k);
   return f;
 }
 
 void CollapseMesh::remove_face(int f) {
+  tick();
+  stamp(faces_[static_cast<std::size_t>(f)]);
   faces_[static_cast<std::size_t>(f)][0] = -1;  // dropped from the vertex segments when next walked
 }
 

@@ -5,6 +5,16 @@
 // Vertex -> tetrahedra and vertex -> boundary triangles adjacency: one
 // segment per vertex (adjacency.hpp). A dead element has vertex -1 first.
 //
+// Star times: the mesh keeps a time, advanced by every change (collapse,
+// vertex move, tetrahedron or boundary triangle added or removed), and per
+// vertex the time its star last changed: a change stamps every vertex of
+// every tetrahedron and boundary triangle it adds, removes, re-points or
+// reshapes. So star_time(x) <= t means the star of x (its tetrahedra and
+// boundary triangles, the positions of their vertices, their stored
+// qualities) is the same as at time t: a try whose outcome depends only on
+// stars (smoothing a vertex, the flips of a tetrahedron) and that was
+// refused at time t is refused again while no star it reads is newer.
+//
 // Element ids never change while collapsing; write_back() renumbers the
 // survivors compactly in their old order (deterministic). After the
 // collapses, smoothing (smooth.hpp) moves vertices and flips (flips.hpp)
@@ -12,6 +22,7 @@
 // the survivors keep their order and the new ones follow in creation order;
 // so does a boundary triangle made by a flip.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,6 +55,9 @@ class CollapseMesh {
   std::int64_t live_tets() const { return live_tets_; }
   std::int64_t live_vertices() const { return live_vertices_; }
   std::int64_t live_faces() const;  // O(boundary triangles)
+  // The mesh time (advanced by every change, starts at 1) and the time the star of v last changed (see above).
+  std::uint64_t time() const { return time_; }
+  std::uint64_t star_time(int v) const { return star_time_[static_cast<std::size_t>(v)]; }
 
   // Appends the live tetrahedra (boundary triangles) of v to out, in list
   // order, unlinking dead ones met on the way.
@@ -97,6 +111,15 @@ class CollapseMesh {
   bool one_region_ = true;
   bool has_vertex_markers_ = false, has_tet_markers_ = false, has_face_markers_ = false;
   std::int64_t live_tets_ = 0, live_vertices_ = 0;
+  std::uint64_t time_ = 1;
+  std::vector<std::uint64_t> star_time_;
+
+  // Advances the time (once per change; stamp then marks its elements' vertices).
+  void tick() { ++time_; }
+  template <std::size_t K>
+  void stamp(const std::array<int, K>& element) {
+    for (const int x : element) star_time_[static_cast<std::size_t>(x)] = time_;
+  }
 };
 
 }  // namespace pqmesh::improve3d::detail

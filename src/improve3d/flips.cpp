@@ -31,17 +31,45 @@ int third(const std::array<int, 3>& f, int a, int b) {
   return -1;
 }
 
+// Every triangulation of the polygon 0 .. m-1 has a triangle on each side
+// (s, s + 1 mod m): false when some side's triangles all score kForbidden
+// (best_ring_triangulation would return kForbidden), scoring the triangles
+// side by side and stopping there. score_once(x, y, z), x < y < z.
+template <class Score>
+bool every_side_open(int m, Score score_once) {
+  for (int s = 0; s < m; ++s) {
+    const int p = s, q = (s + 1) % m;
+    bool open = false;
+    for (int k = 0; k < m && !open; ++k) {
+      if (k == p || k == q) continue;
+      std::array<int, 3> tri{p, q, k};
+      std::sort(tri.begin(), tri.end());
+      open = score_once(tri[0], tri[1], tri[2]) != kForbidden;
+    }
+    if (!open) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Flipper::Flipper(CollapseMesh& mesh, const SizeBound& size, double aspect_cap)
     : mesh_(mesh), size_(size), cap_(aspect_cap) {}
 
 std::int64_t Flipper::pass() {
-  created_.clear();
   return visit_worst_first(mesh_, [this](int t) { return try_tet(t); });
 }
 
+// t was refused and the stars of its vertices have not changed since.
+bool Flipper::refused_unchanged(int t) const {
+  const std::size_t i = static_cast<std::size_t>(t);
+  if (i >= refused_at_.size() || refused_at_[i] == 0) return false;
+  const std::array<int, 4>& k = mesh_.tet(t);
+  return std::all_of(k.begin(), k.end(), [&](int x) { return mesh_.star_time(x) <= refused_at_[i]; });
+}
+
 bool Flipper::try_tet(int t) {
+  if (refused_unchanged(t)) return false;
   const std::array<int, 4> k = mesh_.tet(t);
   for (std::size_t i = 0; i < 4; ++i) {
     around_[i].clear();
@@ -57,7 +85,12 @@ bool Flipper::try_tet(int t) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) consider(edge_removal(t, i, j, trial_));
   for (int i = 0; i < 4; ++i) consider(face_flip(t, i, trial_));
-  if (!found) return false;
+  if (!found) {
+    if (refused_at_.size() < static_cast<std::size_t>(mesh_.tet_count()))
+      refused_at_.resize(static_cast<std::size_t>(mesh_.tet_count()) + static_cast<std::size_t>(mesh_.tet_count()) / 4, 0);
+    refused_at_[static_cast<std::size_t>(t)] = mesh_.time();
+    return false;
+  }
   apply(best_);
   return true;
 }
@@ -77,9 +110,17 @@ bool Flipper::edge_removal(int t, int i, int j, Flip& flip) {
   const Bounds limits = bounds(ring_.tets);
   RingScores scores(m);
   figures_.resize(static_cast<std::size_t>(m * m * m));
+  std::array<bool, kMaxRingVertices * kMaxRingVertices * kMaxRingVertices> scored{};
+  const auto score_once = [&](int x, int y, int z) {
+    bool& done = scored[static_cast<std::size_t>((x * m + y) * m + z)];
+    if (!done) scores.set(x, y, z, score(x, y, z, limits));
+    done = true;
+    return scores.at(x, y, z);
+  };
+  if (!every_side_open(m, score_once)) return false;
   for (int x = 0; x < m; ++x)
     for (int y = x + 1; y < m; ++y)
-      for (int z = y + 1; z < m; ++z) scores.set(x, y, z, score(x, y, z, limits));
+      for (int z = y + 1; z < m; ++z) score_once(x, y, z);
   if (best_ring_triangulation(scores, triangles_) == kForbidden) return false;
   flip.tets.clear();
   flip.aspect.clear();
@@ -220,7 +261,7 @@ void Flipper::apply(const Flip& flip) {
   const int marker = mesh_.tet_marker(flip.old_tets[0]);
   for (const int s : flip.old_tets) mesh_.remove_tet(s);
   for (std::size_t x = 0; x < flip.tets.size(); ++x)
-    created_.push_back(mesh_.add_tet(flip.tets[x], marker, flip.aspect[x], flip.dihedral[x]));
+    mesh_.add_tet(flip.tets[x], marker, flip.aspect[x], flip.dihedral[x]);
   if (flip.faces.empty()) return;
   const int face_marker = mesh_.face_marker(flip.old_faces[0]), facet = mesh_.face_facet(flip.old_faces[0]);
   for (const int f : flip.old_faces) mesh_.remove_face(f);

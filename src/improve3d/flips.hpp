@@ -39,13 +39,21 @@
 // and the 2-3 flips of its four faces, in that enumeration order, and does
 // the best accepted one (largest new minimum dihedral, ties: the first).
 // New tetrahedra and boundary triangles get new ids (collapse_mesh.hpp); new
-// tetrahedra wait for the next pass. Rules 1, 3, 4 and 5 are decided once per
+// tetrahedra wait for the next pass. A tetrahedron refused (no flip accepted)
+// is skipped by the later passes of the Flipper while no star of its four
+// vertices changed since (collapse_mesh.hpp "Star times"): every candidate
+// and rule above reads only those stars (the rings of its edges, the
+// tetrahedra across its faces, the boundary triangles at its vertices), so
+// the skipped try would be refused again. Rules 1, 3, 4 and 5 are decided once per
 // candidate tetrahedron (rule 5 as a floor on each new tetrahedron's angle:
 // the flip's least angle is the least of its tetrahedra'): for an edge
 // removal while scoring the ring's triangles (each triangle's two tetrahedra,
 // kept for the triangulation chosen; a triangle below the floor is forbidden,
 // which leaves the program's choice unchanged whenever that choice passes
-// rule 5), for a 2-3 flip on its three tetrahedra. The angle is measured
+// rule 5), for a 2-3 flip on its three tetrahedra. An edge removal first
+// scores the triangles on each side of the polygon and stops when a side has
+// no admissible one (no triangulation can avoid that side), before scoring
+// the other triangles (each triangle is scored once). The angle is measured
 // before the aspect ratio (tetrahedron_min_dihedral, the same double), so a
 // tetrahedron below the floor costs no enclosing ball. Cost per tetrahedron
 // visited: O(1) ring gathers and 2 * C(kMaxRingVertices, 3) quality
@@ -68,8 +76,6 @@ class Flipper {
 
   // One pass; returns the number of flips.
   std::int64_t pass();
-  // The tetrahedra made by the last pass (live or not).
-  const std::vector<int>& created() const { return created_; }
   // Flips that changed boundary triangles, so far.
   std::int64_t boundary_flips() const { return boundary_flips_; }
 
@@ -83,6 +89,7 @@ class Flipper {
     double min_dihedral = 0;
   };
   bool try_tet(int t);
+  bool refused_unchanged(int t) const;
   bool edge_removal(int t, int i, int j, Flip& flip);
   bool boundary_pair(Flip& flip);
   void replacement_faces(int apex, Flip& flip);
@@ -103,12 +110,13 @@ class Flipper {
   const SizeBound& size_;
   double cap_;
   std::array<std::vector<int>, 4> around_;  // tetrahedra of each vertex of the current tetrahedron
-  std::vector<int> faces_, created_;
+  std::vector<int> faces_;
   EdgeRing ring_;
   std::vector<std::array<int, 3>> triangles_;
   // The two tetrahedra of each ring triangle (x, y, z) as score() measured them, at (x * m + y) * m + z.
   std::vector<std::array<TetQuality, 2>> figures_;
   Flip best_, trial_;
+  std::vector<std::uint64_t> refused_at_;  // per tetrahedron id: mesh time of its last refusal, 0: none
   std::int64_t boundary_flips_ = 0;
 };
 

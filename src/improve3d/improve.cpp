@@ -42,8 +42,9 @@ using detail::VertexClass;
 // tetrahedra depend on these; every outcome is a valid mesh.
 constexpr int kMaxPasses = 8;
 constexpr double kMinYield = 0.02;
-// Smoothing passes: at most kMaxSmoothPasses; each pass after the first tries
-// only vertices whose star changed, and the run stops on a pass that moves nothing.
+// Smoothing passes: at most kMaxSmoothPasses; a pass tries only vertices whose
+// star changed since their last try (smooth.hpp), and the run stops on a pass
+// that moves nothing.
 constexpr int kMaxSmoothPasses = 6;
 // Rounds of smoothing then flips (at most kMaxFlipPasses passes, until one
 // flips nothing); the next round smooths only around the new tetrahedra. The
@@ -264,11 +265,12 @@ std::int64_t collapse_passes(Coarsener& coarsener, Collapser& collapser, Improve
 // Smoothing then flips, in rounds (see kMaxRounds). Returns the vertices
 // moved plus the flips done.
 std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const detail::VertexClasses& classes,
-                             const detail::SizeBound& size, const ImproveOptions& options, ImproveStats& stats) {
+                             const detail::SizeBound& size, const ImproveOptions& options, detail::SmoothTries& tries,
+                             ImproveStats& stats) {
   detail::VertexMobility mobility;
   if (options.smooth) mobility = detail::vertex_mobility(domain, work, classes);
   detail::BoundarySnap snap(domain);
-  detail::Smoother smoother(work, std::move(mobility), &snap, size, options.aspect_cap);
+  detail::Smoother smoother(work, std::move(mobility), &snap, size, options.aspect_cap, tries);
   detail::Flipper flipper(work, size, options.aspect_cap);
   std::int64_t flips = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
@@ -278,8 +280,7 @@ std::int64_t smooth_and_flip(const Domain3& domain, CollapseMesh& work, const de
     for (int pass = 0; options.flip && pass < kMaxFlipPasses; ++pass) {
       const std::int64_t done = flipper.pass();
       if (done == 0) break;
-      flipped += done;
-      smoother.touched(flipper.created());
+      flipped += done;  // the flips' new stars are tried by the next smoothing round (star times)
     }
     flips += flipped;
     if (flipped == 0) break;
@@ -324,6 +325,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   Coarsener coarsener(work, classes, collapser);
   Collapser strict(work, classes, size, {options.aspect_cap, options.target_aspect, 180}, memo);
   detail::ImprovingCollapses improving(work, classes, strict);
+  detail::SmoothTries tries;  // across the smoothing rounds (smooth.hpp)
   detail::StarChanges changes;
   std::vector<int> changed;
   std::vector<std::pair<int, int>> new_edges;
@@ -337,12 +339,12 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
     if (round > 0 && collapses == 0) break;
     work.compact_tets();  // before take(): the ids smoothing and flips see
     changes.take(work);
-    if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, stats) == 0) break;
+    if (!(options.smooth || options.flip) || smooth_and_flip(domain, work, classes, size, options, tries, stats) == 0) break;
   }
   // After the coarsening rounds, so no later collapse of the coarsening's rule follows them.
   for (int round = 0; options.improving_collapses && round < kMaxRounds; ++round) {
     if (improving_collapses(improving, stats) == 0) break;
-    if (options.smooth || options.flip) smooth_and_flip(domain, work, classes, size, options, stats);
+    if (options.smooth || options.flip) smooth_and_flip(domain, work, classes, size, options, tries, stats);
   }
   stats.min_dihedral_after = work.min_dihedral();
   stats.tetrahedra_after = work.live_tets();

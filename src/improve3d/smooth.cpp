@@ -143,15 +143,23 @@ VertexMobility vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const 
 }
 
 Smoother::Smoother(CollapseMesh& mesh, VertexMobility mobility, BoundarySnap* snap, const SizeBound& size,
-                   double aspect_cap)
+                   double aspect_cap, SmoothTries& tries)
     : mesh_(mesh), mobility_(std::move(mobility.code)), feature_(std::move(mobility.feature)), snap_(snap),
-      size_(size), cap_(aspect_cap),
-      changed_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
-      tried_at_(static_cast<std::size_t>(mesh.vertex_count()), 0),
+      size_(size), cap_(aspect_cap), tries_(tries),
       moved_(static_cast<std::size_t>(mesh.vertex_count()), 0),
       marks_(static_cast<std::size_t>(mesh.vertex_count()), 0) {
   mobility_.resize(static_cast<std::size_t>(mesh.vertex_count()), -1);  // none given: nothing moves
   feature_.resize(mobility_.size(), -1);
+  tries_.at.resize(mobility_.size(), 0);
+  tries_.code.resize(mobility_.size(), -1);
+  tries_.feature.resize(mobility_.size(), -1);
+}
+
+// v was tried with its present mobility and refused, and its star has not changed since.
+bool Smoother::refused_unchanged(int v) const {
+  const std::size_t x = static_cast<std::size_t>(v);
+  return tries_.at[x] != 0 && mesh_.star_time(v) <= tries_.at[x] && tries_.code[x] == mobility_[x] &&
+         tries_.feature[x] == feature_[x];
 }
 
 double Smoother::star_min_dihedral(int v) {
@@ -167,7 +175,7 @@ std::int64_t Smoother::pass() {
   for (int v = 0; v < mesh_.vertex_count(); ++v) {
     const std::size_t x = static_cast<std::size_t>(v);
     if (!mesh_.vertex_alive(v) || mobility_[x] < 0) continue;
-    if (!first_pass_ && changed_at_[x] <= tried_at_[x]) continue;
+    if (!first_pass_ && refused_unchanged(v)) continue;
     const double least = star_min_dihedral(v);
     if (least < kWorkBelowDihedral) order.emplace_back(least, v);
   }
@@ -175,22 +183,17 @@ std::int64_t Smoother::pass() {
   std::sort(order.begin(), order.end());
   std::int64_t moved = 0;
   for (const auto& [key, v] : order) {
-    tried_at_[static_cast<std::size_t>(v)] = clock_++;
-    if (!try_vertex(v)) continue;
+    if (refused_unchanged(v)) continue;  // tried by an earlier Smoother (first pass only)
+    const std::size_t x = static_cast<std::size_t>(v);
+    tries_.at[x] = mesh_.time();
+    tries_.code[x] = mobility_[x];
+    tries_.feature[x] = feature_[x];
+    if (!try_vertex(v)) continue;  // a move advances the time past the try: star_time(v) > tries_.at[x]
     ++moved;
     if (moved_[static_cast<std::size_t>(v)] == 0) ++moved_vertices_;
     moved_[static_cast<std::size_t>(v)] = 1;
-    for (const int x : neighbours_) changed_at_[static_cast<std::size_t>(x)] = clock_;
-    changed_at_[static_cast<std::size_t>(v)] = clock_;
   }
   return moved;
-}
-
-void Smoother::touched(const std::vector<int>& tets) {
-  for (const int t : tets)
-    for (const int x : mesh_.tet(t))
-      if (x >= 0) changed_at_[static_cast<std::size_t>(x)] = clock_;
-  ++clock_;
 }
 
 // The quality of the star of v with v at q; false when a tetrahedron is not

@@ -42,11 +42,19 @@
 // (a construction; it only proposes). The best accepted candidate wins (ties:
 // the first in that order).
 //
-// Order: a pass tries the vertices whose star's minimum dihedral angle is
-// below kWorkBelowDihedral, smallest first, ties by id; the first pass tries every movable vertex,
-// later passes only the ones whose star changed (a neighbour moved) since
-// they were last tried -- the outcome of a try depends only on the star, so
-// an unchanged star is refused again. Deterministic: no decision depends on
+// Order: a pass takes the vertices whose star's minimum dihedral angle is
+// below kWorkBelowDihedral, smallest first, ties by id; the first pass of a
+// Smoother takes every movable vertex, later passes only the ones whose star
+// changed since their last try (collapse_mesh.hpp "Star times"). At its turn
+// a vertex is skipped when its star has not changed since its last try (by
+// this Smoother or an earlier one: the tries are remembered in a SmoothTries
+// the caller keeps across Smoothers) and its mobility is the one it was
+// tried with. Neither changes a decision: the outcome of
+// a try depends only on the star (its tetrahedra, boundary triangles and
+// vertex positions) and the mobility, so an unchanged star is refused again,
+// and a move changes the star. (A Smoother fixes the mobility when it is
+// made; a boundary flip after that changes a star without changing the
+// mobility until the next Smoother.) Deterministic: no decision depends on
 // anything but the mesh.
 #include <cstdint>
 #include <vector>
@@ -78,19 +86,28 @@ struct VertexMobility {
 };
 VertexMobility vertex_mobility(const Domain3& domain, CollapseMesh& mesh, const VertexClasses& classes);
 
+// Per vertex, the mesh time of its last smoothing try (0: never tried) and
+// the mobility code and feature it was tried with, for every Smoother on one
+// CollapseMesh.
+struct SmoothTries {
+  std::vector<std::uint64_t> at;
+  std::vector<std::int8_t> code;
+  std::vector<int> feature;
+};
+
 class Smoother {
  public:
   // mobility: vertex_mobility's, or empty (nothing moves); snap: for the slanted codes (may be
-  // null when there are none).
-  Smoother(CollapseMesh& mesh, VertexMobility mobility, BoundarySnap* snap, const SizeBound& size, double aspect_cap);
+  // null when there are none); tries: kept by the caller across Smoothers of this mesh.
+  Smoother(CollapseMesh& mesh, VertexMobility mobility, BoundarySnap* snap, const SizeBound& size, double aspect_cap,
+           SmoothTries& tries);
 
   // One pass (see above); returns the number of vertices moved.
   std::int64_t pass();
-  // Marks the vertices of the tetrahedra `tets` as changed (flips changed their stars).
-  void touched(const std::vector<int>& tets);
   std::int64_t moved_vertices() const { return moved_vertices_; }  // distinct vertices moved so far
 
  private:
+  bool refused_unchanged(int v) const;
   bool try_vertex(int v);
   struct Trial {
     Vec3 q;
@@ -110,10 +127,10 @@ class Smoother {
   BoundarySnap* snap_;
   const SizeBound& size_;
   double cap_;
-  std::vector<std::int64_t> changed_at_, tried_at_;
-  std::int64_t clock_ = 1, moved_vertices_ = 0;
-  std::vector<std::uint8_t> moved_;
+  SmoothTries& tries_;
   bool first_pass_ = true;
+  std::int64_t moved_vertices_ = 0;
+  std::vector<std::uint8_t> moved_;
   std::vector<int> star_, faces_, neighbours_;
   std::vector<int> by_dihedral_;  // star_ by increasing minimum dihedral angle (evaluate's test order)
   std::vector<std::uint64_t> marks_;
