@@ -10,18 +10,12 @@
 #include "improve3d/adjacency.hpp"
 #include "improve3d/collapse_mesh.hpp"
 #include "quality/tetrahedron_quality_memo.hpp"
+#include "two_and_one_mesh.hpp"
 
 namespace pqmesh::improve3d::detail {
 namespace {
 
-// Two tetrahedra sharing face 0 1 2 (apexes 3 and 4) and a third one, 5 6 7 8, apart from them.
-TetMesh3 two_and_one() {
-  TetMesh3 m;
-  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3, 0.3, -1},
-                {5, 0, 0}, {6, 0, 0}, {5, 1, 0}, {5, 0, 1}};
-  m.tetrahedra = {{0, 1, 2, 3}, {0, 2, 1, 4}, {5, 6, 7, 8}};
-  return m;
-}
+using test::two_and_one;
 
 // The vertices whose star time is after `t`.
 std::vector<int> newer_than(const CollapseMesh& mesh, std::uint64_t t) {
