@@ -1,48 +1,43 @@
 #include "improve3d/adjacency.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 
 namespace pqmesh::improve3d::detail {
 
-void Adjacency::append(int v, std::span<const int> elements) {
-  const std::size_t x = static_cast<std::size_t>(v);
-  const int needed = size_[x] + static_cast<int>(elements.size());
-  if (needed > capacity_[x]) {
-    if (pool_.size() + 2 * static_cast<std::size_t>(needed) > pool_.capacity()) pack(2 * static_cast<std::size_t>(needed));
-    const std::int64_t moved_to = static_cast<std::int64_t>(pool_.size());
-    pool_.resize(pool_.size() + 2 * static_cast<std::size_t>(needed));
-    std::copy_n(pool_.begin() + begin_[x], size_[x], pool_.begin() + moved_to);
-    begin_[x] = moved_to;
-    capacity_[x] = 2 * needed;
-  }
-  std::copy(elements.begin(), elements.end(), pool_.begin() + begin_[x] + size_[x]);
-  size_[x] = needed;
+std::vector<int> Adjacency::by_place() const {
+  std::vector<int> order(size_.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int x, int y) {
+    const std::int64_t bx = begin_[static_cast<std::size_t>(x)], by = begin_[static_cast<std::size_t>(y)];
+    return bx != by ? bx < by : x < y;
+  });
+  return order;
 }
 
-void Adjacency::renumber(const std::vector<int>& new_id) { rebuild(new_id.data(), 0); }
-
-void Adjacency::pack(std::size_t room) { rebuild(nullptr, room); }
-
-void Adjacency::rebuild(const int* new_id, std::size_t room) {
-  constexpr int kSlack = 2;
-  std::size_t total = 0;
-  for (std::size_t x = 0; x < size_.size(); ++x) total += static_cast<std::size_t>(size_[x]) + kSlack;
-  std::vector<int> pool;
-  pool.reserve(total + std::max(total / 4, room));
-  for (std::size_t x = 0; x < size_.size(); ++x) {
-    const std::int64_t begin = static_cast<std::int64_t>(pool.size());
-    const int* segment = pool_.data() + begin_[x];
-    for (int i = 0; i < size_[x]; ++i) {
-      const int e = new_id == nullptr ? segment[i] : new_id[static_cast<std::size_t>(segment[i])];
-      if (e >= 0) pool.push_back(e);
-    }
-    begin_[x] = begin;
-    size_[x] = static_cast<int>(static_cast<std::int64_t>(pool.size()) - begin);
-    capacity_[x] = size_[x] + kSlack;
-    pool.resize(pool.size() + kSlack);
+void Adjacency::spread(const std::vector<int>& order, std::size_t end, std::size_t room) {
+  std::size_t total = end;
+  for (const int s : size_)
+    if (s > 0) total += kSlack;
+  std::vector<int> grown;
+  if (pool_.capacity() < total + std::max(total / 8, room)) grown.reserve(total + std::max(total / 4, room));
+  std::vector<int>& to = grown.capacity() > 0 ? grown : pool_;
+  to.resize(std::max(to.size(), total));
+  // From the last segment back: a segment moves up, past no segment not yet
+  // moved (in place), or into the new pool.
+  std::size_t top = total;
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    const std::size_t x = static_cast<std::size_t>(*it);
+    const int size = size_[x];
+    capacity_[x] = size > 0 ? size + kSlack : 0;
+    top -= static_cast<std::size_t>(capacity_[x]);
+    const auto from = pool_.begin() + begin_[x];
+    std::copy_backward(from, from + size, to.begin() + static_cast<std::ptrdiff_t>(top) + size);
+    begin_[x] = static_cast<std::int64_t>(top);
   }
-  pool_ = std::move(pool);
+  if (grown.capacity() > 0) pool_ = std::move(grown);
+  pool_.resize(total);
 }
 
 }  // namespace pqmesh::improve3d::detail

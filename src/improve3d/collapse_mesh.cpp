@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace pqmesh::improve3d::detail {
 
@@ -32,6 +33,11 @@ void room_for_one(std::vector<T>& v) {
 }
 
 template <class T>
+std::vector<T> moved_or_zeros(std::vector<T>& values, std::size_t n) {
+  return values.size() == n ? std::move(values) : std::vector<T>(n, T{});
+}
+
+template <class T>
 std::vector<T> or_zeros(const std::vector<T>& values, std::size_t n) {
   return values.size() == n ? values : std::vector<T>(n, T{});
 }
@@ -53,6 +59,31 @@ CollapseMesh::CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facet
       live_tets_(static_cast<std::int64_t>(mesh.tetrahedra.size())),
       live_vertices_(static_cast<std::int64_t>(mesh.vertices.size())),
       star_time_(mesh.vertices.size(), 1) {
+  derive(memo);
+}
+
+CollapseMesh::CollapseMesh(TetMesh3&& mesh, std::vector<int>&& face_facets, TetrahedronQualityMemo& memo)
+    : has_vertex_markers_(!mesh.vertex_markers.empty()),
+      has_tet_markers_(!mesh.tetrahedron_markers.empty()),
+      has_face_markers_(!mesh.face_markers.empty()),
+      live_tets_(static_cast<std::int64_t>(mesh.tetrahedra.size())),
+      live_vertices_(static_cast<std::int64_t>(mesh.vertices.size())) {
+  const std::size_t n = mesh.vertices.size();
+  points_ = std::move(mesh.vertices);
+  vertex_markers_ = moved_or_zeros(mesh.vertex_markers, n);
+  vertex_alive_.assign(n, 1);
+  tets_ = std::move(mesh.tetrahedra);
+  tet_markers_ = moved_or_zeros(mesh.tetrahedron_markers, tets_.size());
+  faces_ = std::move(mesh.faces);
+  face_markers_ = moved_or_zeros(mesh.face_markers, faces_.size());
+  face_facets_ = std::move(face_facets);
+  star_time_.assign(n, 1);
+  mesh = TetMesh3{};
+  face_facets = {};
+  derive(memo);
+}
+
+void CollapseMesh::derive(TetrahedronQualityMemo& memo) {
   tets_of_vertex_.build(tets_, points_.size());
   faces_of_vertex_.build(faces_, points_.size());
   one_region_ = std::all_of(tet_markers_.begin(), tet_markers_.end(), [&](int m) { return m == tet_markers_.front(); });
@@ -67,11 +98,11 @@ CollapseMesh::CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facet
 }
 
 void CollapseMesh::tets_of(int v, std::vector<int>& out) {
-  tets_of_vertex_.gather(v, [&](int t) { return tets_[static_cast<std::size_t>(t)][0] >= 0; }, out);
+  tets_of_vertex_.gather(v, tet_alive(), out);
 }
 
 void CollapseMesh::faces_of(int v, std::vector<int>& out) {
-  faces_of_vertex_.gather(v, [&](int f) { return faces_[static_cast<std::size_t>(f)][0] >= 0; }, out);
+  faces_of_vertex_.gather(v, face_alive(), out);
 }
 
 void CollapseMesh::apply(const Collapse& c) {
@@ -89,8 +120,8 @@ void CollapseMesh::apply(const Collapse& c) {
     dihedral_[static_cast<std::size_t>(t)] = c.new_dihedral[i];
   }
   for (const int f : c.moving_faces) repoint(faces_[static_cast<std::size_t>(f)], c.u, c.v);
-  tets_of_vertex_.append(c.v, c.moving_tets);
-  faces_of_vertex_.append(c.v, c.moving_faces);
+  tets_of_vertex_.append(c.v, c.moving_tets, tet_alive());
+  faces_of_vertex_.append(c.v, c.moving_faces, face_alive());
   tets_of_vertex_.clear(c.u);
   faces_of_vertex_.clear(c.u);
   vertex_alive_[static_cast<std::size_t>(c.u)] = 0;
@@ -151,7 +182,7 @@ int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect
   tet_markers_.push_back(marker);
   aspect_.push_back(aspect);
   dihedral_.push_back(dihedral);
-  for (const int x : k) tets_of_vertex_.append(x, std::span<const int>(&t, 1));
+  for (const int x : k) tets_of_vertex_.append(x, std::span<const int>(&t, 1), tet_alive());
   tick();
   stamp(k);
   ++live_tets_;
@@ -170,7 +201,7 @@ int CollapseMesh::add_face(const std::array<int, 3>& k, int marker, int facet) {
   faces_.push_back(k);
   face_markers_.push_back(marker);
   face_facets_.push_back(facet);
-  for (const int x : k) faces_of_vertex_.append(x, std::span<const int>(&f, 1));
+  for (const int x : k) faces_of_vertex_.append(x, std::span<const int>(&f, 1), face_alive());
   tick();
   stamp(k);
   return f;

@@ -38,6 +38,9 @@ class CollapseMesh {
  public:
   // Computes every tetrahedron's aspect ratio and minimum dihedral angle (tetrahedron_quality, through memo).
   CollapseMesh(const TetMesh3& mesh, std::span<const int> face_facets, TetrahedronQualityMemo& memo);
+  // The same mesh, taking over the arrays of mesh (left empty) and face_facets
+  // instead of copying them: one copy of the mesh at a time (peak memory).
+  CollapseMesh(TetMesh3&& mesh, std::vector<int>&& face_facets, TetrahedronQualityMemo& memo);
 
   int vertex_count() const { return static_cast<int>(points_.size()); }
   bool vertex_alive(int v) const { return vertex_alive_[static_cast<std::size_t>(v)] != 0; }
@@ -113,6 +116,16 @@ class CollapseMesh {
   std::int64_t live_tets_ = 0, live_vertices_ = 0;
   std::uint64_t time_ = 1;
   std::vector<std::uint64_t> star_time_;
+
+  // The adjacency, one_region_ and the qualities, from the arrays above.
+  void derive(TetrahedronQualityMemo& memo);
+
+  auto tet_alive() const {
+    return [this](int t) { return tets_[static_cast<std::size_t>(t)][0] >= 0; };
+  }
+  auto face_alive() const {
+    return [this](int f) { return faces_[static_cast<std::size_t>(f)][0] >= 0; };
+  }
 
   // Advances the time (once per change; stamp then marks its elements' vertices).
   void tick() { ++time_; }

@@ -7,8 +7,14 @@
 // collapses go to a heap; pop() takes the smaller of the two heads. Vertices
 // never move, so an entry's key stays exact; an entry is stale when an end
 // has been deleted, which the caller checks.
+//
+// Memory: the list and the heap are deques (blocks of a few hundred bytes).
+// A pass of millions of edges frees the list's blocks as it pops them, the
+// heap grows and shrinks by blocks (no doubling, no copy), and the caller's
+// records of refused edges (also a deque) reuse the freed blocks.
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <queue>
 #include <vector>
 
@@ -27,17 +33,18 @@ inline bool earlier(const EdgeEntry& x, const EdgeEntry& y) {
   return x.b < y.b;
 }
 
+using EdgeList = std::deque<EdgeEntry>;
+
 class EdgeQueue {
  public:
   // The sorted start of a pass.
-  void start(std::vector<EdgeEntry> entries);
+  void start(EdgeList entries);
   void push(const EdgeEntry& e) { heap_.push(e); }
-  bool empty() const { return next_ == sorted_.size() && heap_.empty(); }
+  bool empty() const { return sorted_.empty() && heap_.empty(); }
   EdgeEntry pop();
   // Frees the entries (the queue must be empty or is emptied).
   void release() {
     sorted_ = {};
-    next_ = 0;
     heap_ = {};
   }
 
@@ -45,9 +52,8 @@ class EdgeQueue {
   struct Later {
     bool operator()(const EdgeEntry& x, const EdgeEntry& y) const { return earlier(y, x); }
   };
-  std::vector<EdgeEntry> sorted_;
-  std::size_t next_ = 0;
-  std::priority_queue<EdgeEntry, std::vector<EdgeEntry>, Later> heap_;
+  EdgeList sorted_;  // the rest of the sorted start, front first
+  std::priority_queue<EdgeEntry, std::deque<EdgeEntry>, Later> heap_;
 };
 
 }  // namespace pqmesh::improve3d::detail

@@ -21,6 +21,7 @@
 #include "improve3d/vertex_classes.hpp"
 #include "pqmesh/errors.hpp"
 #include "quality/tetrahedron_quality_memo.hpp"
+#include "tet3d/rebuild/free_heap.hpp"
 
 namespace pqmesh::improve3d {
 
@@ -29,6 +30,7 @@ namespace {
 using detail::Collapser;
 using detail::CollapseMesh;
 using detail::EdgeEntry;
+using detail::EdgeList;
 using detail::EdgeQueue;
 using detail::VertexClass;
 
@@ -82,14 +84,6 @@ void validate(const Domain3& domain, const TetMesh3& mesh, const std::vector<int
     throw InvalidInput(ErrorCode::WrongCount, "improve_mesh: size points and sizes differ in number, or max_size < 0");
   for (const double s : options.sizes)
     if (!(s > 0)) throw InvalidInput(ErrorCode::NonFinite, "improve_mesh: a size is not positive");
-}
-
-// Frees the arrays of mesh (their content is in CollapseMesh).
-void release(TetMesh3& mesh) {
-  mesh.vertices = {};
-  mesh.vertex_markers = {};
-  mesh.tetrahedra = {};
-  mesh.tetrahedron_markers = {};
 }
 
 double length2(const CollapseMesh& mesh, int a, int b) {
@@ -171,10 +165,13 @@ class Coarsener {
   }
 
   // Frees the spare room of the refused list and the finished pass's queue
-  // (held across smoothing and flips otherwise).
+  // (held across smoothing and flips otherwise), and gives the heap pages
+  // their blocks leave free back to the system: the arrays allocated next
+  // (compact_tets) are fresh mappings that would not reuse them.
   void trim() {
     refused_.shrink_to_fit();
     queue_.release();
+    tet3d::release_free_heap();
   }
 
  private:
@@ -188,11 +185,9 @@ class Coarsener {
     return {length2(mesh_, a, b), a, b};
   }
 
-  std::vector<EdgeEntry> all_edges() {
+  EdgeList all_edges() {
     Neighbours neighbours(mesh_.vertex_count());
-    std::vector<EdgeEntry> edges;
-    // Euler's formula for a ball: edges = vertices + tetrahedra + boundary triangles / 2 - 1.
-    edges.reserve(static_cast<std::size_t>(mesh_.live_vertices() + mesh_.live_tets() + mesh_.live_faces() / 2 + 16));
+    EdgeList edges;
     for (int a = 0; a < mesh_.vertex_count(); ++a) {
       if (!mesh_.vertex_alive(a)) continue;
       for (const int b : neighbours.of(mesh_, a))
@@ -204,8 +199,8 @@ class Coarsener {
   // The edges queued by stars_changed and the refused edges with both ends
   // alive and an end changed since the refusal; the other refused edges (both
   // ends alive) stay refused.
-  std::vector<EdgeEntry> changed_edges() {
-    std::vector<EdgeEntry> edges;
+  EdgeList changed_edges() {
+    EdgeList edges;
     for (const EdgeEntry& e : fresh_)
       if (mesh_.vertex_alive(e.a) && mesh_.vertex_alive(e.b)) edges.push_back(e);
     fresh_.clear();
@@ -311,9 +306,8 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   const auto start = std::chrono::steady_clock::now();
   validate(domain, mesh, face_facets, options);
   TetrahedronQualityMemo memo;
-  CollapseMesh work(mesh, face_facets, memo);
   const detail::VertexClasses classes = detail::classify_vertices(domain, mesh, face_facets);
-  release(mesh);  // work holds it; write_back fills it again
+  CollapseMesh work(std::move(mesh), std::move(face_facets), memo);  // write_back fills them again
   const detail::SizeBound size(options.max_size, options.size_points, options.sizes);
   Collapser collapser(work, classes, size, {options.aspect_cap, options.target_aspect, options.min_dihedral}, memo);
 

@@ -12,6 +12,7 @@
 #include "pqmesh/alpha.hpp"
 #include "pqmesh/check.hpp"
 #include "pqmesh/tetmesh.hpp"
+#include "tet3d/rebuild/free_heap.hpp"
 
 namespace pqmesh {
 
@@ -134,6 +135,7 @@ void improve(const Domain3& domain, const TetMeshOptions& options, Construction&
   s.constructed_min_dihedral = c.review.min_dihedral;
   s.constructed_max_dihedral = c.review.max_dihedral;
   if (!options.improve) return;
+  tet3d::release_free_heap();  // the construction's freed pages: the working mesh's arrays are fresh mappings
   improve3d::ImproveOptions io;
   io.aspect_cap = c.review.max_aspect;
   io.target_aspect = options.target_aspect;

@@ -77,7 +77,7 @@ TEST(AdjacencyPack, SegmentsSurviveManyPacks) {
     for (int v = round % 3; v < kVertices; v += 3) {
       const std::vector<int> more = {next, next + 1, next + 2};
       next += 3;
-      adjacency.append(v, more);
+      adjacency.append(v, more, [](int) { return true; });
       for (const int e : more) expected[static_cast<std::size_t>(v)].push_back(e);
     }
   for (int v = 0; v < kVertices; ++v) {
@@ -105,7 +105,7 @@ TEST(AdjacencyPack, EmptySegmentsSurviveManyPacks) {
     const int v = (round * 7) % kVertices;
     const std::vector<int> more = {next, next + 1};
     next += 2;
-    adjacency.append(v, more);
+    adjacency.append(v, more, [](int) { return true; });
     for (const int e : more) expected[static_cast<std::size_t>(v)].push_back(e);
     if (round % 5 == 4) {  // empty a segment: every element dead
       const int w = (round * 3) % kVertices;
@@ -118,6 +118,41 @@ TEST(AdjacencyPack, EmptySegmentsSurviveManyPacks) {
     got.clear();
     adjacency.gather(v, [](int) { return true; }, got);
     EXPECT_EQ(got, expected[static_cast<std::size_t>(v)]) << "vertex " << v;
+  }
+}
+
+// Elements die while their vertices' segments are never gathered (as the
+// far vertices of a coarsened region): the packs drop them, so the pool stays
+// within a small multiple of the live elements, and every segment keeps its
+// live elements in order.
+TEST(AdjacencyPack, PacksDropDeadElements) {
+  constexpr int kVertices = 30, kPerVertex = 4, kRounds = 400;
+  std::vector<std::array<int, 1>> elements;
+  for (int v = 0; v < kVertices; ++v)
+    for (int i = 0; i < kPerVertex; ++i) elements.push_back({v});
+  std::vector<char> dead(elements.size(), 0);
+  const auto alive = [&](int e) { return dead[static_cast<std::size_t>(e)] == 0; };
+  Adjacency adjacency;
+  adjacency.build(elements, kVertices);
+  std::vector<std::vector<int>> live(kVertices);
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e)
+    live[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)][0])].push_back(e);
+  for (int round = 0; round < kRounds; ++round) {
+    const int v = (round * 7) % kVertices;
+    auto& mine = live[static_cast<std::size_t>(v)];
+    dead[static_cast<std::size_t>(mine.front())] = 1;  // the oldest element of v dies, a new one comes
+    mine.erase(mine.begin());
+    const int fresh = static_cast<int>(dead.size());
+    dead.push_back(0);
+    adjacency.append(v, std::vector<int>{fresh}, alive);
+    mine.push_back(fresh);
+  }
+  // The live elements stay kVertices * kPerVertex; kRounds appends without a drop would need more.
+  EXPECT_LT(adjacency.pool_capacity(), static_cast<std::size_t>(4 * kVertices * kPerVertex));
+  for (int v = 0; v < kVertices; ++v) {
+    std::vector<int> got;
+    adjacency.gather(v, alive, got);
+    EXPECT_EQ(got, live[static_cast<std::size_t>(v)]) << "vertex " << v;
   }
 }
 
