@@ -74,10 +74,43 @@ constexpr std::int64_t kMaxWarpRebuilds = 64;
 // rebuild loop froze or limited to their box faces; `unfrozen_worst_job`,
 // the job of the worst tetrahedron before the worst-box freeze when it kept
 // a round (-1 otherwise).
+// `table`, the table the mesh was made with (null for an unwarped run).
 struct PassNotes {
   std::unordered_set<GridPoint, GridPointHash> wanted, held;
   std::int32_t unfrozen_worst_job = -1;
+  std::shared_ptr<const WarpTable> table;
 };
+
+// The mesh of a finished assembler and the counts of its table.
+BoxMesh finish_pass(BoxAssembler& a, const WarpTable& warps) {
+  a.count_squares();
+  BoxMesh out = a.finish();
+  out.warped = static_cast<std::int64_t>(warps.size());
+  out.warp_conflicts = warps.conflicts;
+  out.warp_bisected = warps.bisected;
+  out.warp_fallback = warps.fallback;
+  out.warp_reflex_left = warps.reflex_left;
+  out.warp_reflex_copied = warps.reflex_copied;
+  out.warp_crowded_left = warps.crowded_left;
+  out.warp_on_plane = warps.on_plane;
+  out.warp_inverting_left = warps.frozen_left;
+  out.warp_first_pass = warps.first_pass;
+  out.warp_parallel_left = warps.parallel_left;
+  out.warp_parallel = warps.parallel;
+  out.warp_centres = warps.centres;
+  out.warp_shortened = warps.shortened;
+  return out;
+}
+
+// The final pass of a run: every job once with `warps` (null: unwarped).
+std::unique_ptr<BoxAssembler> final_pass(const BoxPass& pass, const WarpTable* warps) {
+  auto a = std::make_unique<BoxAssembler>(pass.tree, pass.corners, pass.domain, warps);
+  a->allow_two_apex(pass.two_apex);
+  a->allow_facet_fans(pass.facet_fans);
+  a->set_empty_cells(pass.empty_cells);
+  run_jobs(*a, pass.tree, pass.jobs);
+  return a;
+}
 
 // One run of the warped (or unwarped) box meshing; `two_apex` allows the
 // two-cone-point edge boxes.
@@ -242,33 +275,35 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     }
   }
   if (!done) {
-    done = std::make_unique<BoxAssembler>(tree, corners, domain, options.warp ? &warps : nullptr);
-    done->allow_two_apex(two_apex);
-    done->allow_facet_fans(hooks.facet_fans);
-    done->set_empty_cells(&empty_cells);
-    run_jobs(*done, tree, jobs);
+    done = final_pass(pass, options.warp ? &warps : nullptr);
     notes.wanted.insert(done->two_apex_points().begin(), done->two_apex_points().end());
   }
-  BoxAssembler& a = *done;
-  a.count_squares();
-  BoxMesh out = a.finish();
-  out.warped = static_cast<std::int64_t>(warps.size());
-  out.warp_conflicts = warps.conflicts;
-  out.warp_bisected = warps.bisected;
-  out.warp_fallback = warps.fallback;
-  out.warp_reflex_left = warps.reflex_left;
-  out.warp_reflex_copied = warps.reflex_copied;
-  out.warp_crowded_left = warps.crowded_left;
-  out.warp_on_plane = warps.on_plane;
-  out.warp_inverting_left = warps.frozen_left;
-  out.warp_first_pass = warps.first_pass;
+  BoxMesh out = finish_pass(*done, warps);
+  done.reset();
   out.warp_rebuilds = rebuilds;
   out.worst_box_rounds = worst_box_rounds;
-  out.warp_parallel_left = warps.parallel_left;
-  out.warp_parallel = warps.parallel;
-  out.warp_centres = warps.centres;
-  out.warp_shortened = warps.shortened;
-  if (options.keep_warp_table) out.warps = std::make_shared<const WarpTable>(std::move(warps));
+  if (options.warp) notes.table = std::make_shared<const WarpTable>(std::move(warps));
+  if (options.keep_warp_table) out.warps = notes.table;
+  return out;
+}
+
+// The mesh of a finished run remade from its final table alone: the rebuild
+// loop, the wider table and the worst-box freeze are deterministic, so the
+// final table determines the run's mesh (every trial pass that ends a run
+// made exactly the tetrahedra a final pass with its table makes: collect mode
+// differs only where a tetrahedron inverts, and the kept trial inverted none).
+// Costs one pass over the jobs instead of the run's tables and trials.
+BoxMesh remake_pass(const OctTree& tree, const CornerSet& corners, const Domain3& domain, std::span<const BoxJob> jobs,
+                    const BoxMeshOptions& options, const detail::BoxMeshTestHooks& hooks, const BoxMesh& counts,
+                    const std::shared_ptr<const WarpTable>& table) {
+  const EmptyCells empty_cells(tree, jobs);
+  const BoxPass pass{tree, corners, domain, jobs, false, hooks.facet_fans, &empty_cells};
+  const WarpTable unwarped;
+  const std::unique_ptr<BoxAssembler> a = final_pass(pass, table.get());
+  BoxMesh out = finish_pass(*a, table ? *table : unwarped);
+  out.warp_rebuilds = counts.warp_rebuilds;
+  out.worst_box_rounds = counts.worst_box_rounds;
+  if (options.keep_warp_table) out.warps = table;
   return out;
 }
 
@@ -315,8 +350,9 @@ bool job_touches(const BoxMesh& m, std::int32_t job, const std::unordered_set<Gr
 // the second run costs a whole run for nothing: bounded seed 58 took 2.7x cpu),
 // the run with them is made too, and kept only when its worst tetrahedron
 // (tet_shape, only compared; both meshes are valid by exact orient3d) is
-// strictly better. Otherwise the first run is remade (not kept meanwhile: a
-// mesh is about half the peak memory). Every other run does no extra work and
+// strictly better. Otherwise the first run's mesh is remade from its final
+// table in one pass over the jobs (remake_pass; the mesh is not kept
+// meanwhile: it is about half the peak memory). Every other run does no extra work and
 // keeps its bytes; no run gets a worse worst tetrahedron. When the worst-box
 // freeze kept a round, the box asked about is the one that was worst before it,
 // so the freeze never adds a run (flat seed 70: the freeze's new worst box
@@ -330,14 +366,19 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   const auto [single_worst, worst_tet] = worst_tet_shape(single);
   const std::int32_t worst_job = notes.unfrozen_worst_job >= 0 ? notes.unfrozen_worst_job : single.tet_job[worst_tet];
   if (!job_touches(single, worst_job, notes.held, notes.wanted)) return single;
+  const std::shared_ptr<const WarpTable> single_table = std::move(notes.table);
+  BoxMesh counts;  // the single run's loop counts, for the remake
+  counts.warp_rebuilds = single.warp_rebuilds;
+  counts.worst_box_rounds = single.worst_box_rounds;
   single = BoxMesh{};
   notes = PassNotes{};
   release_free_heap();
   BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, true, notes);
   if (worst_tet_shape(two).first < single_worst) return two;
   two = BoxMesh{};
+  notes = PassNotes{};
   release_free_heap();
-  return mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, false, notes);
+  return remake_pass(tree, corners, domain, jobs, options, hooks, counts, single_table);
 }
 
 }  // namespace pqmesh::tet3d
