@@ -374,11 +374,15 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   notes = PassNotes{};
   release_free_heap();
   BoxMesh two = mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, true, notes);
+  two.box_runs = 2;
   if (worst_tet_shape(two).first < single_worst) return two;
   two = BoxMesh{};
   notes = PassNotes{};
   release_free_heap();
-  return remake_pass(tree, corners, domain, jobs, options, hooks, counts, single_table);
+  BoxMesh out = hooks.remake_from_table ? remake_pass(tree, corners, domain, jobs, options, hooks, counts, single_table)
+                                        : mesh_boxes_pass(tree, corners, domain, jobs, options, hooks, false, notes);
+  out.box_runs = 3;
+  return out;
 }
 
 }  // namespace pqmesh::tet3d

@@ -141,6 +141,11 @@ struct BoxMeshTestHooks {
   // two-point construction is tried there, so that a test can bound that
   // construction alone (flat_cone_two_apex_test.cpp).
   bool facet_fans = true;
+  // When the two-cone-point run loses, the first run's mesh is remade from
+  // its final warp table in one pass over the jobs (facet_boxes.cpp
+  // remake_pass); false: the first run is made again whole. Both must give
+  // the same mesh (two_cone_points_test.cpp).
+  bool remake_from_table = true;
 };
 }  // namespace detail
 
@@ -164,6 +169,9 @@ struct BoxMesh {
   std::int64_t warp_centres = 0;    // square centres carried with their corners (among `warped`)
   std::int64_t warp_rebuilds = 0;   // warp tables rebuilt after freezing points of inverted tetrahedra
   std::int64_t worst_box_rounds = 0;  // worst-box freeze rounds kept (worst_box_freeze.hpp)
+  // Box stages run: 1; 2 when the two-cone-point run was made and kept; 3 when
+  // it lost and the first run's mesh was remade (mesh_boxes).
+  std::int64_t box_runs = 1;
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
   std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
 };
