@@ -15,13 +15,13 @@ void repoint(std::array<int, K>& element, int u, int v) {
     if (x == u) x = v;
 }
 
-// v without the entries whose new_id is -1, in order, with room for a sixteenth more.
-template <class T>
-std::vector<T> kept(const std::vector<T>& v, const std::vector<int>& new_id, std::size_t live) {
+// The entries i of v with alive(i), in order, with room for a sixteenth more.
+template <class T, class Alive>
+std::vector<T> kept(const std::vector<T>& v, Alive alive, std::size_t live) {
   std::vector<T> out;
   out.reserve(live + live / 16 + 16);
   for (std::size_t i = 0; i < v.size(); ++i)
-    if (new_id[i] >= 0) out.push_back(v[i]);
+    if (alive(i)) out.push_back(v[i]);
   return out;
 }
 
@@ -73,7 +73,7 @@ CollapseMesh::CollapseMesh(TetMesh3&& mesh, std::vector<int>&& face_facets, Tetr
   vertex_markers_ = moved_or_zeros(mesh.vertex_markers, n);
   vertex_alive_.assign(n, 1);
   tets_ = std::move(mesh.tetrahedra);
-  tet_markers_ = moved_or_zeros(mesh.tetrahedron_markers, tets_.size());
+  if (mesh.tetrahedron_markers.size() == tets_.size()) tet_markers_ = std::move(mesh.tetrahedron_markers);  // else one region 0
   faces_ = std::move(mesh.faces);
   face_markers_ = moved_or_zeros(mesh.face_markers, faces_.size());
   face_facets_ = std::move(face_facets);
@@ -87,6 +87,10 @@ void CollapseMesh::derive(TetrahedronQualityMemo& memo) {
   tets_of_vertex_.build(tets_, points_.size());
   faces_of_vertex_.build(faces_, points_.size());
   one_region_ = std::all_of(tet_markers_.begin(), tet_markers_.end(), [&](int m) { return m == tet_markers_.front(); });
+  if (one_region_) {
+    region_marker_ = tet_markers_.empty() ? 0 : tet_markers_.front();
+    tet_markers_ = {};
+  }
   aspect_.resize(tets_.size());
   dihedral_.resize(tets_.size());
   for (std::size_t t = 0; t < tets_.size(); ++t) {
@@ -159,27 +163,35 @@ void CollapseMesh::move_vertex(int v, Vec3 p, std::span<const int> tets, std::sp
   }
 }
 
+// One array at a time beside the others (peak memory): the pool first, in
+// place, then the per-tetrahedron arrays, tets_ (which tells the live ones) last.
 void CollapseMesh::compact_tets() {
-  std::vector<int> new_id(tets_.size(), -1);
-  int live = 0;
-  for (std::size_t t = 0; t < tets_.size(); ++t)
-    if (tets_[t][0] >= 0) new_id[t] = live++;
-  const auto n = static_cast<std::size_t>(live);
-  tets_ = kept(tets_, new_id, n);
-  tet_markers_ = kept(tet_markers_, new_id, n);
-  aspect_ = kept(aspect_, new_id, n);
-  dihedral_ = kept(dihedral_, new_id, n);
-  tets_of_vertex_.renumber(new_id);
+  std::size_t n = 0;
+  {
+    std::vector<int> new_id(tets_.size(), -1);
+    for (std::size_t t = 0; t < tets_.size(); ++t)
+      if (tets_[t][0] >= 0) new_id[t] = static_cast<int>(n++);
+    tets_of_vertex_.renumber(new_id);
+  }
+  const auto alive = [&](std::size_t t) { return tets_[t][0] >= 0; };
+  if (!one_region_) tet_markers_ = kept(tet_markers_, alive, n);
+  aspect_ = kept(aspect_, alive, n);
+  dihedral_ = kept(dihedral_, alive, n);
+  tets_ = kept(tets_, alive, n);
 }
 
 int CollapseMesh::add_tet(const std::array<int, 4>& k, int marker, double aspect, double dihedral) {
-  room_for_one(tet_markers_);
+  if (one_region_ && marker != region_marker_) {
+    tet_markers_.assign(tets_.size(), region_marker_);
+    one_region_ = false;
+  }
+  if (!one_region_) room_for_one(tet_markers_);
   room_for_one(tets_);
   room_for_one(aspect_);
   room_for_one(dihedral_);
   const int t = static_cast<int>(tets_.size());
   tets_.push_back(k);
-  tet_markers_.push_back(marker);
+  if (!one_region_) tet_markers_.push_back(marker);
   aspect_.push_back(aspect);
   dihedral_.push_back(dihedral);
   for (const int x : k) tets_of_vertex_.append(x, std::span<const int>(&t, 1), tet_alive());
@@ -213,7 +225,12 @@ void CollapseMesh::remove_face(int f) {
   faces_[static_cast<std::size_t>(f)][0] = -1;  // dropped from the vertex segments when next walked
 }
 
-void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) const {
+void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) && {
+  tets_of_vertex_ = {};
+  faces_of_vertex_ = {};
+  aspect_ = {};
+  dihedral_ = {};
+  star_time_ = {};
   std::vector<int> new_id(points_.size(), -1);
   mesh.vertices.clear();
   mesh.vertex_markers.clear();
@@ -224,6 +241,9 @@ void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) con
     mesh.vertices.push_back(points_[v]);
     if (has_vertex_markers_) mesh.vertex_markers.push_back(vertex_markers_[v]);
   }
+  points_ = {};
+  vertex_markers_ = {};
+  vertex_alive_ = {};
   const auto renumbered = [&](int x) { return new_id[static_cast<std::size_t>(x)]; };
   mesh.tetrahedra.clear();
   mesh.tetrahedron_markers.clear();
@@ -233,8 +253,10 @@ void CollapseMesh::write_back(TetMesh3& mesh, std::vector<int>& face_facets) con
     const auto& k = tets_[t];
     if (k[0] < 0) continue;
     mesh.tetrahedra.push_back({renumbered(k[0]), renumbered(k[1]), renumbered(k[2]), renumbered(k[3])});
-    if (has_tet_markers_) mesh.tetrahedron_markers.push_back(tet_markers_[t]);
+    if (has_tet_markers_) mesh.tetrahedron_markers.push_back(tet_marker(static_cast<int>(t)));
   }
+  tets_ = {};
+  tet_markers_ = {};
   mesh.faces.clear();
   mesh.face_markers.clear();
   face_facets.clear();

@@ -46,7 +46,7 @@ class CollapseMesh {
   bool vertex_alive(int v) const { return vertex_alive_[static_cast<std::size_t>(v)] != 0; }
   const Vec3& point(int v) const { return points_[static_cast<std::size_t>(v)]; }
   const std::array<int, 4>& tet(int t) const { return tets_[static_cast<std::size_t>(t)]; }
-  int tet_marker(int t) const { return tet_markers_[static_cast<std::size_t>(t)]; }
+  int tet_marker(int t) const { return one_region_ ? region_marker_ : tet_markers_[static_cast<std::size_t>(t)]; }
   bool one_region() const { return one_region_; }  // every tetrahedron has the same marker
   double aspect(int t) const { return aspect_[static_cast<std::size_t>(t)]; }
   // The minimum dihedral angle (degrees) of t, kept by every change.
@@ -98,14 +98,18 @@ class CollapseMesh {
   // O(tetrahedra + adjacency).
   void compact_tets();
   // The survivors, renumbered in their old order, into mesh and face_facets.
-  void write_back(TetMesh3& mesh, std::vector<int>& face_facets) const;
+  // Consumes the working mesh: each array is freed once read (the adjacency
+  // and the qualities first), so the output and the working mesh are not
+  // both whole at any time (peak memory).
+  void write_back(TetMesh3& mesh, std::vector<int>& face_facets) &&;
 
  private:
   std::vector<Vec3> points_;
   std::vector<int> vertex_markers_;
   std::vector<std::uint8_t> vertex_alive_;
   std::vector<std::array<int, 4>> tets_;
-  std::vector<int> tet_markers_;
+  std::vector<int> tet_markers_;  // empty while one_region_ (every marker is region_marker_)
+  int region_marker_ = 0;
   std::vector<double> aspect_, dihedral_;
   Adjacency tets_of_vertex_;
   std::vector<std::array<int, 3>> faces_;
@@ -117,7 +121,8 @@ class CollapseMesh {
   std::uint64_t time_ = 1;
   std::vector<std::uint64_t> star_time_;
 
-  // The adjacency, one_region_ and the qualities, from the arrays above.
+  // The adjacency, one_region_ (freeing tet_markers_ if so) and the
+  // qualities, from the arrays above.
   void derive(TetrahedronQualityMemo& memo);
 
   auto tet_alive() const {

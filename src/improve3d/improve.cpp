@@ -344,7 +344,7 @@ ImproveStats improve_mesh(const Domain3& domain, TetMesh3& mesh, std::vector<int
   stats.tetrahedra_after = work.live_tets();
   stats.vertices_after = work.live_vertices();
   stats.worst_aspect_after = work.worst_aspect();
-  work.write_back(mesh, face_facets);
+  std::move(work).write_back(mesh, face_facets);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

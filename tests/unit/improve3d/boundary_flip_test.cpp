@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "improve3d/collapse_mesh.hpp"
@@ -99,7 +100,7 @@ TEST(BoundaryFlip, NewBoundaryTrianglesFaceOutAndKeepTheFacet) {
     EXPECT_EQ(flipper.boundary_flips(), 1) << what;
     TetMesh3 out = h.mesh;
     std::vector<int> facets;
-    work.write_back(out, facets);
+    std::move(work).write_back(out, facets);  // flipper is done with work
     EXPECT_NEAR(volume(out), before, 1e-12) << what;
     std::vector<std::array<int, 3>> bottom;
     for (std::size_t f = 0; f < out.faces.size(); ++f) {
