@@ -10,7 +10,7 @@
 // grow beyond its capacity moves to the end of the pool with twice the room;
 // the hole it leaves is not reused until the pool is full: then the segments
 // are packed in place, in pool order, without holes and without dead
-// elements, each with kSlack spare entries. The pool grows (a new buffer with
+// elements, each non-empty one with kSlack spare entries. The pool grows (a new buffer with
 // a quarter spare) only when packing leaves less than an eighth free, so a
 // pack never holds two pools while the elements' count does not grow
 // (amortised O(1) per appended id; no doubling).
