@@ -14,8 +14,8 @@
 // a quarter spare) only when packing leaves less than an eighth free, so a
 // pack never holds two pools while the elements' count does not grow
 // (amortised O(1) per appended id; no doubling).
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
