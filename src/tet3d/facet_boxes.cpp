@@ -129,7 +129,12 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   if (options.warp) {
     WarpOptions first_warp;
     first_warp.reflex_copies = hooks.reflex_copies;
-    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), first_warp);
+    // The journal of the loop's last table: a rebuild with the same edge
+    // boxes decides again only what the newly held points can change
+    // (warp.hpp rewarp_box_vertices; the same table).
+    WarpJournal journal;
+    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), first_warp,
+                              hooks.incremental_tables ? &journal : nullptr);
     release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
@@ -187,6 +192,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
       // the table is rebuilt without freezing anything; when no such box is
       // new, the moved points of the inverted tetrahedra are frozen.
       bool translated = false;
+      std::unordered_set<GridPoint, GridPointHash> newly_held;
       for (const std::int32_t ji : trial->bad_jobs()) {
         const BoxJob& j = jobs[static_cast<std::size_t>(ji)];
         if (j.kind != BoxKind::Edge || !shifted_jobs.insert(ji).second) continue;
@@ -200,17 +206,20 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
         std::unordered_map<GridPoint, std::uint8_t, GridPointHash> now;
         for (std::size_t i = 0; i < trial->bad().size(); ++i) now[trial->bad()[i]] |= trial->bad_axes()[i];
         for (const auto& [g, axes] : now)
-          if (!second_only.emplace(g, axes).second) frozen.insert(g);
+          if (second_only.emplace(g, axes).second || frozen.insert(g).second) newly_held.insert(g);
       }
       const std::vector<std::int32_t> inverted = trial->bad_jobs();
       trial.reset();
       if (!candidates) candidates = warp_candidates(tree, corners, domain, jobs);
-      WarpTable next = warp_box_vertices(tree, corners, domain, *candidates,
-                                         {.frozen = &frozen,
-                                          .reflex_copies = hooks.reflex_copies,
-                                          .edge_boxes = edge_boxes,
-                                          .second_only = &second_only,
-                                          .out_of_face = false});
+      const WarpOptions held{.frozen = &frozen,
+                             .reflex_copies = hooks.reflex_copies,
+                             .edge_boxes = edge_boxes,
+                             .second_only = &second_only,
+                             .out_of_face = false};
+      WarpTable next =
+          hooks.incremental_tables && journal.edge_boxes == edge_boxes.size()
+              ? rewarp_box_vertices(tree, corners, domain, *candidates, held, warps, newly_held, journal)
+              : warp_box_vertices(tree, corners, domain, *candidates, held, hooks.incremental_tables ? &journal : nullptr);
       if (hooks.partial_trials) {
         if (!job_boxes) job_boxes.emplace(tree, jobs);
         scope = job_boxes->touching(changed_points(warps, next), inverted);

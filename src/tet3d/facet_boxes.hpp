@@ -146,6 +146,11 @@ struct BoxMeshTestHooks {
   // remake_pass); false: the first run is made again whole. Both must give
   // the same mesh (two_cone_points_test.cpp).
   bool remake_from_table = true;
+  // The rebuild loop's tables after the first, when the edge boxes are
+  // unchanged, are made from the last one (warp.hpp rewarp_box_vertices);
+  // false: each is built whole. Both must give the same mesh
+  // (rewarp_test.cpp).
+  bool incremental_tables = true;
 };
 }  // namespace detail
 

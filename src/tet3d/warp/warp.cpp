@@ -7,11 +7,14 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "plc/facet_triangle_range.hpp"
+#include "pqmesh/errors.hpp"
 #include "tet3d/squares/cut_square_edge.hpp"
+#include "tet3d/warp/warp_journal.hpp"
 #include "tet3d/points/facet_plane.hpp"
 
 namespace pqmesh::tet3d {
@@ -974,20 +977,89 @@ void warp_square_centres(WarpGeometry& geo, const WarpCandidates& candidates, co
 
 }  // namespace
 
+namespace {
+
+// The face translations of the edge boxes, each at its fitted length.
+FaceShifts fitted_face_shifts(WarpGeometry& geo, const WarpCandidates& candidates, const WarpOptions& options) {
+  FaceShifts shifts(find_face_shifts(geo, options.edge_boxes));
+  const std::vector<std::vector<std::size_t>> face_points = measure_face_shifts(geo, candidates, shifts);
+  fit_face_shifts(geo, candidates, face_points, shifts.list());
+  return shifts;
+}
+
+bool is_ring_point(const WarpCandidate& c) { return !c.facets.empty() && c.square_corners.empty(); }
+
+// Ring point i decided (warp_ring_point), recorded in `journal` if any.
+void decide_ring_point(WarpGeometry& geo, const FaceShifts& shifts, std::uint32_t i, const WarpCandidate& c,
+                       const WarpOptions& options, WarpTable& table, WarpJournal* journal) {
+  if (journal == nullptr) {
+    warp_ring_point(geo, shifts, c, options, table);
+    return;
+  }
+  const WarpCounts before = warp_counts(table);
+  const std::size_t copies_before = table.copy_count();
+  warp_ring_point(geo, shifts, c, options, table);
+  record_point(i, c, before, copies_before, table, *journal);
+}
+
+bool same_warp(const Warp* a, const Warp* b) {
+  if (a == nullptr || b == nullptr) return a == b;
+  return a->facet == b->facet && a->at.x == b->at.x && a->at.y == b->at.y && a->at.z == b->at.z;
+}
+
+}  // namespace
+
 // §4.3, both passes, as a list of steps (warp.hpp; docs/algorithm/tet3d_warp.md
 // "The two passes"): the face translations of the edge boxes, their adaptive
 // length, every ring point in candidate order (first pass, second pass, side
 // rules, fallbacks), then the square centres.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                            const WarpCandidates& candidates, const WarpOptions& options) {
+                            const WarpCandidates& candidates, const WarpOptions& options, WarpJournal* journal) {
   WarpGeometry geo(tree, corners, domain);
-  FaceShifts shifts(find_face_shifts(geo, options.edge_boxes));
-  const std::vector<std::vector<std::size_t>> face_points = measure_face_shifts(geo, candidates, shifts);
-  fit_face_shifts(geo, candidates, face_points, shifts.list());
+  const FaceShifts shifts = fitted_face_shifts(geo, candidates, options);
+  if (journal != nullptr) {
+    *journal = WarpJournal{};
+    journal->edge_boxes = options.edge_boxes.size();
+  }
   WarpTable table;
-  for (const WarpCandidate& c : candidates)
-    if (!c.facets.empty() && c.square_corners.empty()) warp_ring_point(geo, shifts, c, options, table);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (const WarpCandidate c = candidates[i]; is_ring_point(c))
+      decide_ring_point(geo, shifts, static_cast<std::uint32_t>(i), c, options, table, journal);
   warp_square_centres(geo, candidates, options, table);
+  return table;
+}
+
+// The steps of warp_box_vertices, each ring point either decided again or
+// given its old outcome (warp.hpp: when that is the same table).
+WarpTable rewarp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                              const WarpCandidates& candidates, const WarpOptions& options, const WarpTable& old,
+                              const std::unordered_set<GridPoint, GridPointHash>& changed, WarpJournal& journal) {
+  if (journal.edge_boxes != options.edge_boxes.size())
+    throw InternalError("tet3d: a warp rebuild with other edge boxes than its journal's");
+  WarpGeometry geo(tree, corners, domain);
+  const FaceShifts shifts = fitted_face_shifts(geo, candidates, options);
+  WarpJournal next;
+  next.edge_boxes = options.edge_boxes.size();
+  JournalCursor cursor(journal);
+  std::unordered_set<GridPoint, GridPointHash> differs;  // ring points whose outcome changed
+  WarpTable table;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const WarpCandidate c = candidates[i];
+    if (!is_ring_point(c)) continue;
+    const auto point = static_cast<std::uint32_t>(i);
+    bool again = changed.count(c.p) != 0;
+    if (!differs.empty())
+      for (const GridPoint& w : c.neighbours) again = again || differs.count(w) != 0;
+    if (!again) {
+      if (const Warp* w = old.find(c.p)) table.insert(c.p, *w);
+      cursor.replay(point, c, table, next);
+      continue;
+    }
+    decide_ring_point(geo, shifts, point, c, options, table, &next);
+    if (!same_warp(table.find(c.p), old.find(c.p)) | !cursor.same_copies(point, next)) differs.insert(c.p);
+  }
+  warp_square_centres(geo, candidates, options, table);
+  journal = std::move(next);
   return table;
 }
 

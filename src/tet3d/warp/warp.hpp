@@ -120,8 +120,47 @@ struct WarpOptions {
   // (docs/algorithm/tet3d_warp.md "One decision per shared face").
   bool out_of_face = false;
 };
+// What a table build did per ring point besides its entry: the counts it
+// added and its Fig. 4.7 copies, in candidate order. With it a rebuild
+// copies the outcome of every point whose inputs are unchanged
+// (rewarp_box_vertices) instead of deciding it again.
+struct WarpJournal {
+  struct Count {
+    std::uint32_t point;    // candidate index
+    std::uint16_t count;    // index into WarpTable::kCounts
+    std::int16_t delta;
+  };
+  struct Copy {
+    std::uint32_t point;  // candidate index
+    int facet;
+    Vec3 at;
+  };
+  std::vector<Count> counts;
+  std::vector<Copy> copies;
+  std::size_t edge_boxes = 0;  // the build's options.edge_boxes.size()
+};
+
+// `journal` (may be null): receives the build's journal.
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
-                            const WarpCandidates& candidates, const WarpOptions& options = {});
+                            const WarpCandidates& candidates, const WarpOptions& options = {},
+                            WarpJournal* journal = nullptr);
+
+// The table warp_box_vertices(candidates, options) makes, made from `old`:
+// `old` and `journal` come from a build with the same candidates, reflex
+// copies, out_of_face and edge boxes (edge boxes only grow: the same count),
+// and `changed` holds every point whose frozen status or second_only entry
+// differs between the two builds. The ring points are taken in candidate
+// order, as the full build does; a point's decision reads only its own
+// options and the entries of its ring neighbours decided before it
+// (warp.cpp keeps_decisions, neighbour_ends), so a point outside `changed`
+// none of whose neighbours' entries differed keeps its old entry, copies and
+// counts; every other point is decided again. Square centres are decided
+// again. Same table, same counts as the full build (rewarp_test.cpp).
+// `journal` becomes the new table's. Cost: the full build's on the points
+// decided again, a lookup per neighbour on the others.
+WarpTable rewarp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
+                              const WarpCandidates& candidates, const WarpOptions& options, const WarpTable& old,
+                              const std::unordered_set<GridPoint, GridPointHash>& changed, WarpJournal& journal);
 
 // (leaf, facet) pairs of facet boxes: the candidates are their ring points.
 struct FacetLeaf {

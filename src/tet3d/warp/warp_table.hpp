@@ -96,6 +96,13 @@ class WarpTable {
   std::int64_t shortened = 0;     // moved by 1/2..1/16 of a refused second-pass move (among size())
   std::int64_t out_of_face = 0;   // reported points that kept a move out of the reporting box (among size())
   std::int64_t out_of_face_left = 0;  // reported points whose move out of the reporting box was dropped
+  // Every count above (a rebuild copies each point's share of them:
+  // warp.hpp WarpJournal).
+  static constexpr std::int64_t WarpTable::*kCounts[] = {
+      &WarpTable::conflicts,   &WarpTable::bisected,      &WarpTable::reflex_left,   &WarpTable::reflex_copied,
+      &WarpTable::crowded_left, &WarpTable::on_plane,     &WarpTable::first_pass,    &WarpTable::fallback,
+      &WarpTable::parallel,    &WarpTable::parallel_left, &WarpTable::frozen_left,   &WarpTable::centres,
+      &WarpTable::shortened,   &WarpTable::out_of_face,   &WarpTable::out_of_face_left};
 
  private:
   struct CopyHash {
