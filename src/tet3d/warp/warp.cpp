@@ -931,53 +931,65 @@ void warp_ring_point(WarpGeometry& geo, const FaceShifts& shifts, const WarpCand
   settle_move(geo, v, fp, sp, options, table);
 }
 
-// Step "square centres" (beyond the thesis; docs/algorithm/tet3d_warp.md
+// Step "square centre" (beyond the thesis; docs/algorithm/tet3d_warp.md
 // "Square centres move with their corners"). Purpose: a square's centre c is
 // moved by the mean of its four corners' moves (the centre of the bilinear
 // patch through the warped corners). Contract: runs after every ring point;
 // c on a facet plane of the boxes using the square is not moved (`on_plane`);
 // a move changing c's exact side of such a plane is refused (`conflicts`);
 // frozen: `frozen_left`; else one entry keyed (c, -1), counted `centres`.
-void warp_square_centres(WarpGeometry& geo, const WarpCandidates& candidates, const WarpOptions& options,
-                         WarpTable& table) {
-  for (const WarpCandidate& c : candidates) {
-    if (c.square_corners.empty()) continue;
-    Vec3 move;
-    bool moved = false;
-    for (const GridPoint& q : c.square_corners)
-      if (const Warp* w = table.find(q)) {
-        move = move + (w->at - grid_coordinates(geo.tree, q));
-        moved = true;
-      }
-    if (!moved) continue;
-    const Vec3 x0 = grid_coordinates(geo.tree, c.p);
-    const Vec3 y = x0 + (1.0 / static_cast<double>(c.square_corners.size())) * move;
-    bool on_some = false, kept = true;
-    for (const int f : c.facets) {
-      const Sign s0 = geo.plane(f).side(x0);
-      on_some = on_some || s0 == Sign::Zero;
-      kept = kept && geo.plane(f).side(y) == s0;
+void warp_square_centre(WarpGeometry& geo, const WarpCandidate& c, const WarpOptions& options, WarpTable& table) {
+  Vec3 move;
+  bool moved = false;
+  for (const GridPoint& q : c.square_corners)
+    if (const Warp* w = table.find(q)) {
+      move = move + (w->at - grid_coordinates(geo.tree, q));
+      moved = true;
     }
-    if (on_some) {
-      ++table.on_plane;
-      continue;
-    }
-    if (!kept) {
-      ++table.conflicts;
-      continue;
-    }
-    if (is_frozen(options, c.p)) {
-      ++table.frozen_left;
-      continue;
-    }
-    table.insert(c.p, Warp{-1, y});
-    ++table.centres;
+  if (!moved) return;
+  const Vec3 x0 = grid_coordinates(geo.tree, c.p);
+  const Vec3 y = x0 + (1.0 / static_cast<double>(c.square_corners.size())) * move;
+  bool on_some = false, kept = true;
+  for (const int f : c.facets) {
+    const Sign s0 = geo.plane(f).side(x0);
+    on_some = on_some || s0 == Sign::Zero;
+    kept = kept && geo.plane(f).side(y) == s0;
   }
+  if (on_some) {
+    ++table.on_plane;
+    return;
+  }
+  if (!kept) {
+    ++table.conflicts;
+    return;
+  }
+  if (is_frozen(options, c.p)) {
+    ++table.frozen_left;
+    return;
+  }
+  table.insert(c.p, Warp{-1, y});
+  ++table.centres;
 }
 
-}  // namespace
+// Candidate i decided: a ring point (with a facet; warp_ring_point) or a
+// square centre (warp_square_centre), recorded in `journal` if any.
+void decide(WarpGeometry& geo, const FaceShifts& shifts, std::uint32_t i, const WarpCandidate& c,
+            const WarpOptions& options, WarpTable& table, WarpJournal* journal) {
+  const bool centre = !c.square_corners.empty();
+  if (!centre && c.facets.empty()) return;
+  const WarpCounts before = journal != nullptr ? warp_counts(table) : WarpCounts{};
+  const std::size_t copies_before = table.copy_count();
+  if (centre)
+    warp_square_centre(geo, c, options, table);
+  else
+    warp_ring_point(geo, shifts, c, options, table);
+  if (journal != nullptr) record_point(i, c, before, copies_before, table, *journal);
+}
 
-namespace {
+bool same_warp(const Warp* a, const Warp* b) {
+  if (a == nullptr || b == nullptr) return a == b;
+  return a->facet == b->facet && a->at.x == b->at.x && a->at.y == b->at.y && a->at.z == b->at.z;
+}
 
 // The face translations of the edge boxes, each at its fitted length.
 FaceShifts fitted_face_shifts(WarpGeometry& geo, const WarpCandidates& candidates, const WarpOptions& options) {
@@ -987,78 +999,70 @@ FaceShifts fitted_face_shifts(WarpGeometry& geo, const WarpCandidates& candidate
   return shifts;
 }
 
-bool is_ring_point(const WarpCandidate& c) { return !c.facets.empty() && c.square_corners.empty(); }
-
-// Ring point i decided (warp_ring_point), recorded in `journal` if any.
-void decide_ring_point(WarpGeometry& geo, const FaceShifts& shifts, std::uint32_t i, const WarpCandidate& c,
-                       const WarpOptions& options, WarpTable& table, WarpJournal* journal) {
-  if (journal == nullptr) {
-    warp_ring_point(geo, shifts, c, options, table);
-    return;
-  }
-  const WarpCounts before = warp_counts(table);
-  const std::size_t copies_before = table.copy_count();
-  warp_ring_point(geo, shifts, c, options, table);
-  record_point(i, c, before, copies_before, table, *journal);
-}
-
-bool same_warp(const Warp* a, const Warp* b) {
-  if (a == nullptr || b == nullptr) return a == b;
-  return a->facet == b->facet && a->at.x == b->at.x && a->at.y == b->at.y && a->at.z == b->at.z;
-}
-
 }  // namespace
+
+// A journal's face translations: a rebuild with the same edge boxes has the
+// same ones.
+struct JournalShifts {
+  FaceShifts shifts;
+};
 
 // §4.3, both passes, as a list of steps (warp.hpp; docs/algorithm/tet3d_warp.md
 // "The two passes"): the face translations of the edge boxes, their adaptive
 // length, every ring point in candidate order (first pass, second pass, side
-// rules, fallbacks), then the square centres.
+// rules, fallbacks), then the square centres (the candidates after the ring
+// points).
 WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                             const WarpCandidates& candidates, const WarpOptions& options, WarpJournal* journal) {
   WarpGeometry geo(tree, corners, domain);
-  const FaceShifts shifts = fitted_face_shifts(geo, candidates, options);
+  auto shifts = std::make_shared<const JournalShifts>(JournalShifts{fitted_face_shifts(geo, candidates, options)});
   if (journal != nullptr) {
     *journal = WarpJournal{};
     journal->edge_boxes = options.edge_boxes.size();
+    journal->shifts = shifts;
   }
   WarpTable table;
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (const WarpCandidate c = candidates[i]; is_ring_point(c))
-      decide_ring_point(geo, shifts, static_cast<std::uint32_t>(i), c, options, table, journal);
-  warp_square_centres(geo, candidates, options, table);
+    decide(geo, shifts->shifts, static_cast<std::uint32_t>(i), candidates[i], options, table, journal);
   return table;
 }
 
-// The steps of warp_box_vertices, each ring point either decided again or
-// given its old outcome (warp.hpp: when that is the same table).
+// The steps of warp_box_vertices with the journal's face translations, each
+// candidate either decided again or given its old outcome (warp.hpp: when
+// that is the same table). A ring point depends on its own options and its
+// ring neighbours' entries, a centre on its own options and its corners'
+// entries: `differs` collects the ring points whose entry or copies changed.
 WarpTable rewarp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                               const WarpCandidates& candidates, const WarpOptions& options, const WarpTable& old,
                               const std::unordered_set<GridPoint, GridPointHash>& changed, WarpJournal& journal) {
-  if (journal.edge_boxes != options.edge_boxes.size())
+  if (journal.edge_boxes != options.edge_boxes.size() || !journal.shifts)
     throw InternalError("tet3d: a warp rebuild with other edge boxes than its journal's");
   WarpGeometry geo(tree, corners, domain);
-  const FaceShifts shifts = fitted_face_shifts(geo, candidates, options);
   WarpJournal next;
-  next.edge_boxes = options.edge_boxes.size();
+  next.edge_boxes = journal.edge_boxes;
+  next.shifts = journal.shifts;
   JournalCursor cursor(journal);
-  std::unordered_set<GridPoint, GridPointHash> differs;  // ring points whose outcome changed
+  std::unordered_set<GridPoint, GridPointHash> differs;
+  const auto any_differs = [&](const auto& points) {
+    if (differs.empty()) return false;
+    for (const GridPoint& w : points)
+      if (differs.count(w) != 0) return true;
+    return false;
+  };
   WarpTable table;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const WarpCandidate c = candidates[i];
-    if (!is_ring_point(c)) continue;
+    const bool centre = !c.square_corners.empty();
+    if (!centre && c.facets.empty()) continue;
     const auto point = static_cast<std::uint32_t>(i);
-    bool again = changed.count(c.p) != 0;
-    if (!differs.empty())
-      for (const GridPoint& w : c.neighbours) again = again || differs.count(w) != 0;
-    if (!again) {
+    if (changed.count(c.p) == 0 && !(centre ? any_differs(c.square_corners) : any_differs(c.neighbours))) {
       if (const Warp* w = old.find(c.p)) table.insert(c.p, *w);
       cursor.replay(point, c, table, next);
       continue;
     }
-    decide_ring_point(geo, shifts, point, c, options, table, &next);
+    decide(geo, next.shifts->shifts, point, c, options, table, &next);
     if (!same_warp(table.find(c.p), old.find(c.p)) | !cursor.same_copies(point, next)) differs.insert(c.p);
   }
-  warp_square_centres(geo, candidates, options, table);
   journal = std::move(next);
   return table;
 }

@@ -66,6 +66,7 @@
 // by grid_key in the square code), so all boxes sharing v see one moved
 // copy, keyed (Warped, v, F) (F = the first close facet, or -1).
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
@@ -124,6 +125,7 @@ struct WarpOptions {
 // added and its Fig. 4.7 copies, in candidate order. With it a rebuild
 // copies the outcome of every point whose inputs are unchanged
 // (rewarp_box_vertices) instead of deciding it again.
+struct JournalShifts;  // warp.cpp
 struct WarpJournal {
   struct Count {
     std::uint32_t point;    // candidate index
@@ -137,7 +139,8 @@ struct WarpJournal {
   };
   std::vector<Count> counts;
   std::vector<Copy> copies;
-  std::size_t edge_boxes = 0;  // the build's options.edge_boxes.size()
+  std::size_t edge_boxes = 0;                  // the build's options.edge_boxes.size()
+  std::shared_ptr<const JournalShifts> shifts;  // the build's fitted face translations
 };
 
 // `journal` (may be null): receives the build's journal.
