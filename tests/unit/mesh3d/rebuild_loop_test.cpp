@@ -1,6 +1,8 @@
-// The rebuild loop's partial trials (facet_boxes.cpp, trial_scope.hpp) give
-// the mesh of full trials, vertex for vertex, on every-run seed 38 (two or
-// more rebuilds); tet_mesh reports the rebuilds of every-run seed 45.
+// The rebuild loop's partial trials (facet_boxes.cpp, trial_scope.hpp) and
+// its tables made from the last one (warp.hpp rewarp_box_vertices) give the
+// mesh of full trials and whole tables, vertex for vertex, on every-run seed
+// 38 (two or more rebuilds); tet_mesh reports the rebuilds of every-run
+// seed 45.
 #include <gtest/gtest.h>
 
 #include "pqmesh/check.hpp"
@@ -26,6 +28,25 @@ TEST(RebuildLoop, PartialTrialsMakeTheMeshOfFullTrials) {
     ASSERT_EQ(partial.mesh.vertices[i], full.mesh.vertices[i]) << "vertex " << i;
   EXPECT_EQ(partial.mesh.tetrahedra, full.mesh.tetrahedra);
   EXPECT_LE(test::valid_aspect_times_alpha(d, partial), test::kAspectAlphaC);
+}
+
+TEST(RebuildLoop, TablesFromTheLastMakeTheMeshOfWholeTables) {
+  const Domain3 d = make_domain(test::random_polyhedron(38, test::every_run_polyhedron_options()));
+  tet3d::detail::BoxMeshTestHooks whole_tables;
+  whole_tables.incremental_tables = false;
+  const tet3d::BoxMesh rewarped = test::warped_box_run(d).mesh;
+  const tet3d::BoxMesh whole = test::warped_box_run(d, test::warped_options(), whole_tables).mesh;
+  EXPECT_GE(rewarped.warp_rebuilds, 2);
+  EXPECT_EQ(rewarped.warp_rebuilds, whole.warp_rebuilds);
+  EXPECT_EQ(rewarped.warped, whole.warped);
+  EXPECT_EQ(rewarped.warp_inverting_left, whole.warp_inverting_left);
+  EXPECT_EQ(rewarped.warp_conflicts, whole.warp_conflicts);
+  EXPECT_EQ(rewarped.warp_centres, whole.warp_centres);
+  ASSERT_EQ(rewarped.mesh.vertices.size(), whole.mesh.vertices.size());
+  for (std::size_t i = 0; i < whole.mesh.vertices.size(); ++i)
+    ASSERT_EQ(rewarped.mesh.vertices[i], whole.mesh.vertices[i]) << "vertex " << i;
+  EXPECT_EQ(rewarped.mesh.tetrahedra, whole.mesh.tetrahedra);
+  EXPECT_LE(test::valid_aspect_times_alpha(d, rewarped), test::kAspectAlphaC);
 }
 
 // tet_mesh reports the rebuilds (the CLI summary prints them): every-run
