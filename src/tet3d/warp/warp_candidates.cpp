@@ -72,11 +72,18 @@ std::int32_t WarpCandidateBuilder::ring_id(const GridPoint& p) {
 }
 
 void WarpCandidateBuilder::add_ring(std::span<const GridPoint> ring, std::span<const int> facets, std::int32_t level,
-                                    const GridPoint& box_lo, const GridPoint& box_hi) {
-  ids_.clear();
-  for (const GridPoint& p : ring) ids_.push_back(ring_id(p));
+                                    const GridPoint& box_lo, const GridPoint& box_hi, const PointIndex* warped) {
   const std::size_t n = ring.size();
+  const auto kept = [&](std::size_t i) { return warped == nullptr || warped->find(ring[i]) >= 0; };
+  ids_.clear();
+  keep_.clear();
+  for (std::size_t i = 0; i < n; ++i) keep_.push_back(kept(i));
   for (std::size_t i = 0; i < n; ++i) {
+    const bool listed = keep_[i] || keep_[(i + 1) % n] || keep_[(i + n - 1) % n];
+    ids_.push_back(listed ? ring_id(ring[i]) : -1);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep_[i]) continue;
     const GridPoint& p = ring[i];
     const std::int32_t id = ids_[i];
     std::int32_t& l = level_[static_cast<std::size_t>(id)];
@@ -106,16 +113,17 @@ void WarpCandidateBuilder::add_points(std::span<const GridPoint> points, std::sp
   }
 }
 
-void WarpCandidateBuilder::add_centre(const FaceSquare& s, std::span<const int> facets) {
+void WarpCandidateBuilder::add_centre(const FaceSquare& s, std::span<const int> facets, const PointIndex* warped) {
+  GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
+  c1.f[static_cast<std::size_t>(s.u)] += s.side;
+  c2.f[static_cast<std::size_t>(s.u)] += s.side;
+  c2.f[static_cast<std::size_t>(s.v)] += s.side;
+  c3.f[static_cast<std::size_t>(s.v)] += s.side;
+  if (warped != nullptr && warped->find(s.lo) < 0 && warped->find(c1) < 0 && warped->find(c2) < 0 &&
+      warped->find(c3) < 0)
+    return;
   const auto [cid, fresh] = centre_index_.insert(s.centre());
-  if (fresh) {
-    GridPoint c1 = s.lo, c2 = s.lo, c3 = s.lo;
-    c1.f[static_cast<std::size_t>(s.u)] += s.side;
-    c2.f[static_cast<std::size_t>(s.u)] += s.side;
-    c2.f[static_cast<std::size_t>(s.v)] += s.side;
-    c3.f[static_cast<std::size_t>(s.v)] += s.side;
-    corners_.insert(corners_.end(), {s.lo, c1, c2, c3});
-  }
+  if (fresh) corners_.insert(corners_.end(), {s.lo, c1, c2, c3});
   for (const int f : facets) centre_facet_log_.push_back({cid, f});
 }
 
@@ -196,13 +204,26 @@ WarpCandidates warp_candidates(const OctTree& tree, const CornerSet& corners, co
                                std::span<const BoxJob> jobs) {
   PointBook scratch;
   const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
-  WarpCandidateBuilder builder;
   std::vector<FaceSquare> squares;
   std::vector<GridPoint> ring;  // one square's ring, reused
+  // The points the warp can move: the ring points of jobs with a facet.
+  WarpCandidateBuilder::PointIndex warped;
+  for (const BoxJob& j : jobs) {
+    if (job_faces(faces_only, j).facets.empty()) continue;
+    squares.clear();
+    job_squares(tree, corners, j, squares);
+    for (const FaceSquare& s : squares) {
+      square_ring(s, corners, ring);
+      for (const GridPoint& p : ring) warped.insert(p);
+    }
+  }
+  WarpCandidateBuilder builder;
   for (const BoxJob& j : jobs) {
     squares.clear();
     job_squares(tree, corners, j, squares);
     const BoxFaces faces = job_faces(faces_only, j);
+    // A job with a facet holds only points of `warped`.
+    const WarpCandidateBuilder::PointIndex* filter = faces.facets.empty() ? &warped : nullptr;
     const std::int32_t level = tree.level(j.leaf) - (j.kind == BoxKind::Vertex ? 1 : 0);
     // The job's box (a vertex job's united box) for its whole edges.
     const BoxKey<3>& jkey = tree.key(j.leaf);
@@ -211,9 +232,9 @@ WarpCandidates warp_candidates(const OctTree& tree, const CornerSet& corners, co
     for (std::int64_t& x : box_hi.f) x += (j.kind == BoxKind::Vertex ? 2 : 1) * jkey.fine_side();
     for (const FaceSquare& s : squares) {
       // The square's centre, carried with its four corners (warp.hpp).
-      builder.add_centre(s, faces.facets);
+      builder.add_centre(s, faces.facets, &warped);
       square_ring(s, corners, ring);
-      builder.add_ring(ring, faces.facets, level, box_lo, box_hi);
+      builder.add_ring(ring, faces.facets, level, box_lo, box_hi, filter);
     }
   }
   return builder.finish();

@@ -17,7 +17,10 @@
 // Order: candidate ids are first uses, ring points in job order (squares in
 // job_squares order, ring order within a square), then square centres in
 // order of first use. Deterministic: two builds from the same jobs give the
-// same list.
+// same list. warp_candidates lists only the points the warp can move (ring
+// points of a box with a facet), their ring neighbours and the centres of
+// squares with such a corner: leaving out the others keeps the order of
+// those listed.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -172,14 +175,20 @@ class WarpCandidates {
 // Collects uses of points, then makes the list (finish, once).
 class WarpCandidateBuilder {
  public:
+  using PointIndex = FirstUseIndex<GridPoint, GridPointHash>;
   // One square's ring, used by a box at `level` with `facets`, whose bounds
-  // box_lo <= box_hi give the box edges through its points.
+  // box_lo <= box_hi give the box edges through its points. With `warped`
+  // (the only points that can be warped: those with a facet), a point
+  // outside it gets no row and no id unless it is a ring neighbour of one
+  // inside (the warp skips every point without a facet; warp.hpp).
   void add_ring(std::span<const GridPoint> ring, std::span<const int> facets, std::int32_t level,
-                const GridPoint& box_lo, const GridPoint& box_hi);
+                const GridPoint& box_lo, const GridPoint& box_hi, const PointIndex* warped = nullptr);
   // Points used by boxes with `facets` (no rings, no level, no box edges).
   void add_points(std::span<const GridPoint> points, std::span<const int> facets);
-  // The centre of square s, used by a box with `facets`.
-  void add_centre(const FaceSquare& s, std::span<const int> facets);
+  // The centre of square s, used by a box with `facets`. With `warped`: not
+  // added when no corner of s is in it (no corner moves, so the centre
+  // never does).
+  void add_centre(const FaceSquare& s, std::span<const int> facets, const PointIndex* warped = nullptr);
   // Throws InternalError if a centre is also a ring point.
   WarpCandidates finish();
 
@@ -194,6 +203,7 @@ class WarpCandidateBuilder {
   RowBuilder<BoxEdgeSpan, 6> edges_;
   std::vector<GridPoint> corners_;
   std::vector<std::int32_t> ids_;  // one ring's ids, reused
+  std::vector<bool> keep_;         // one ring's points with rows, reused
 };
 
 // The list of hand-made records, in their order. Throws InternalError for a
