@@ -2,7 +2,10 @@
 // construction written here from its definition: one record per point with
 // growing vectors, filled use by use (every job's squares in order, ring
 // order within a square) with a linear search for repeats, ring points in
-// order of first use, then square centres in order of first use. Every field
+// order of first use, then square centres in order of first use. Listed:
+// the points that can move (ring points of a job with a facet), with their
+// rows, and their ring neighbours (rows empty); the centres of squares with
+// a corner that can move. Every field
 // of every candidate must agree, in order: the warp's sums follow the rows'
 // order, so the same content in another order would change output bytes.
 // Models: data/3d files (octrees with and without the separating splits) and
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,6 +55,15 @@ std::vector<PlainCandidate> plain_candidates(const OctTree& tree, const CornerSe
   const SquareDispatcher faces_only(tree, corners, domain, scratch, nullptr);
   std::vector<PlainCandidate> rings, centres;
   std::map<GridPoint, std::size_t> ring_at, centre_at;
+  std::set<GridPoint> movable;
+  for (const BoxJob& j : jobs) {
+    if (job_faces(faces_only, j).facets.empty()) continue;
+    std::vector<FaceSquare> squares;
+    job_squares(tree, corners, j, squares);
+    for (const FaceSquare& s : squares)
+      for (const GridPoint& p : square_ring(s, corners)) movable.insert(p);
+  }
+  const auto can_move = [&](const GridPoint& p) { return movable.count(p) != 0; };
   for (const BoxJob& j : jobs) {
     std::vector<FaceSquare> squares;
     job_squares(tree, corners, j, squares);
@@ -63,27 +76,36 @@ std::vector<PlainCandidate> plain_candidates(const OctTree& tree, const CornerSe
     for (std::int64_t& x : hi.f) x += (united ? 2 : 1) * key.fine_side();
     for (const FaceSquare& s : squares) {
       const GridPoint c = s.centre();
-      if (centre_at.emplace(c, centres.size()).second) {
-        PlainCandidate pc;
-        pc.p = c;
-        // Corners counterclockwise in (u, v) from s.lo.
-        for (const auto& [du, dv] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-          GridPoint q = s.lo;
-          q.f[static_cast<std::size_t>(s.u)] += du * s.side;
-          q.f[static_cast<std::size_t>(s.v)] += dv * s.side;
-          pc.square_corners.push_back(q);
-        }
-        centres.push_back(pc);
+      std::vector<GridPoint> square_corners;  // counterclockwise in (u, v) from s.lo
+      for (const auto& [du, dv] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        GridPoint q = s.lo;
+        q.f[static_cast<std::size_t>(s.u)] += du * s.side;
+        q.f[static_cast<std::size_t>(s.v)] += dv * s.side;
+        square_corners.push_back(q);
       }
-      for (const int f : faces.facets) add_once(centres[centre_at[c]].facets, f);
+      if (std::any_of(square_corners.begin(), square_corners.end(), can_move)) {
+        if (centre_at.emplace(c, centres.size()).second) {
+          PlainCandidate pc;
+          pc.p = c;
+          pc.square_corners = square_corners;
+          centres.push_back(pc);
+        }
+        for (const int f : faces.facets) add_once(centres[centre_at[c]].facets, f);
+      }
       const std::vector<GridPoint> ring = square_ring(s, corners);
-      for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::size_t n = ring.size();
+      for (std::size_t i = 0; i < n; ++i) {
         const GridPoint& p = ring[i];
+        if (!can_move(p) && !can_move(ring[(i + 1) % n]) && !can_move(ring[(i + n - 1) % n])) continue;
         if (ring_at.emplace(p, rings.size()).second) {
           PlainCandidate pc;
           pc.p = p;
           rings.push_back(pc);
         }
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        const GridPoint& p = ring[i];
+        if (!can_move(p)) continue;
         PlainCandidate& r = rings[ring_at[p]];
         r.level = std::max(r.level, level);
         for (const int f : faces.facets) add_once(r.facets, f);
