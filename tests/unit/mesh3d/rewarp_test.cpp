@@ -15,13 +15,12 @@
 #include <unordered_set>
 #include <vector>
 
-#include "mesh3d/box_plan.hpp"
-#include "mv3d/octree_builder.hpp"
 #include "pqmesh/domain.hpp"
 #include "support/random_domains.hpp"
 #include "tet3d/facet_boxes.hpp"
 #include "tet3d/warp/warp.hpp"
 #include "tet3d/warp/warp_candidates.hpp"
+#include "warped_box_mesh.hpp"
 
 namespace pqmesh::tet3d {
 namespace {
@@ -59,15 +58,10 @@ void hold_more(const WarpTable& t, int offset, int stride, bool freeze, PointSet
 
 void check_rewarp(std::uint64_t seed, bool with_edge_boxes) {
   const Domain3 d = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
-  mv3d::OctreeOptions oo;  // tet_mesh's lightest octree
-  oo.generic_grid = true;
-  oo.extended_margin = 1;
-  oo.separate = false;
-  mv3d::OctreeBuilder builder(d, oo);
-  builder.build();
-  const mesh3d::BoxPlan plan = mesh3d::plan_all_kinds(builder);
-  const CornerSet corners(builder);
-  const OctTree& tree = builder.tree();
+  const test::PlannedOctree o = test::planned_octree(d, test::lightest_octree_options());
+  const mesh3d::BoxPlan& plan = o.plan;
+  const CornerSet& corners = *o.corners;
+  const OctTree& tree = o.tree();
   std::vector<EdgeBoxBounds> edge_boxes;
   if (with_edge_boxes)
     for (const BoxJob& j : plan.jobs)
