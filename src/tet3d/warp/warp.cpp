@@ -1031,7 +1031,7 @@ WarpTable warp_box_vertices(const OctTree& tree, const CornerSet& corners, const
 // candidate either decided again or given its old outcome (warp.hpp: when
 // that is the same table). A ring point depends on its own options and its
 // ring neighbours' entries, a centre on its own options and its corners'
-// entries: `differs` collects the ring points whose entry or copies changed.
+// entries: `differs` collects the candidates whose entry or copies changed.
 WarpTable rewarp_box_vertices(const OctTree& tree, const CornerSet& corners, const Domain3& domain,
                               const WarpCandidates& candidates, const WarpOptions& options, const WarpTable& old,
                               const std::unordered_set<GridPoint, GridPointHash>& changed, WarpJournal& journal) {
@@ -1061,6 +1061,7 @@ WarpTable rewarp_box_vertices(const OctTree& tree, const CornerSet& corners, con
       continue;
     }
     decide(geo, next.shifts->shifts, point, c, options, table, &next);
+    // Both tests run: same_copies moves the cursor past the old copies.
     if (!same_warp(table.find(c.p), old.find(c.p)) | !cursor.same_copies(point, next)) differs.insert(c.p);
   }
   journal = std::move(next);
