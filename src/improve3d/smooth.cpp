@@ -10,6 +10,7 @@
 
 #include "pqmesh/quality.hpp"
 #include "predicates/predicates.hpp"
+#include "quality/tetrahedron_aspect_within.hpp"
 #include "quality/tetrahedron_min_dihedral.hpp"
 
 namespace pqmesh::improve3d::detail {
@@ -196,42 +197,49 @@ std::int64_t Smoother::pass() {
   return moved;
 }
 
-// The quality of the star of v with v at q; false when a tetrahedron is not
-// positive, or has a minimum dihedral angle below `floor` (at or below it when
-// `strict`), or the star's worst aspect ratio exceeds `trial.worst_aspect`
-// (the limit on entry). Orientation and the dihedral floor are tested first,
-// the star's tetrahedra in increasing order of their minimum dihedral angle
-// before the move (by_dihedral_: the likeliest to stay below the floor come
-// first), with the cheaper tetrahedron_min_dihedral (the same doubles as
-// tetrahedron_quality's), so most refused candidates stop at their first
-// tetrahedra and never compute an enclosing ball. Every test must pass, so
-// their order does not change the outcome.
-bool Smoother::evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, std::vector<double>& aspect,
-                        std::vector<double>& dihedral) {
-  const double limit = trial.worst_aspect;
+// Whether v may go to q as far as the star's shape goes, and the star's
+// least minimum dihedral angle there (trial.min_dihedral): false when a
+// tetrahedron is not positive, or has a minimum dihedral angle below `floor`
+// (at or below it when `strict`), or an aspect ratio above `limit`. The
+// orientation and the dihedral floor are tested first, the star's tetrahedra
+// in increasing order of their minimum dihedral angle before the move
+// (by_dihedral_: the likeliest to stay below the floor come first), with
+// tetrahedron_min_dihedral (the same doubles as tetrahedron_quality's), so
+// most refused candidates stop at their first tetrahedra; the aspect ratios
+// then by tetrahedron_aspect_within (the same answers as
+// tetrahedron_quality's), which skips the enclosing ball of every tetrahedron
+// whose sphere ratio is within the limit. Every test must pass, so their
+// order does not change the outcome.
+bool Smoother::evaluate(int v, Vec3 q, double floor, bool strict, double limit, Trial& trial) {
   trial.q = q;
-  trial.worst_aspect = 0;
   trial.min_dihedral = 180;
-  aspect.clear();
-  dihedral.clear();
   for (const int t : by_dihedral_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
     const Sign s = orient3d(p[0], p[1], p[2], p[3]);
     if (s != Sign::Positive) return false;
     const double least = tetrahedron_min_dihedral(p[0], p[1], p[2], p[3], s);
-    if (least < floor || (strict && least == floor)) return false;  // a NaN angle fails neither (std::min below skips it)
+    if (least < floor || (strict && least == floor)) return false;  // a NaN angle fails neither (std::min skips it)
+    trial.min_dihedral = std::min(trial.min_dihedral, least);
   }
   if (slanted(mobility_[static_cast<std::size_t>(v)]) && !fan_keeps_orientation(v, mesh_.point(v), q)) return false;
   for (const int t : star_) {
     const auto p = corners(mesh_, mesh_.tet(t), v, q);
-    const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
-    if (!(tq.aspect_ratio <= limit)) return false;  // NaN never passes
-    trial.worst_aspect = std::max(trial.worst_aspect, tq.aspect_ratio);
-    trial.min_dihedral = std::min(trial.min_dihedral, tq.min_dihedral_deg);
-    aspect.push_back(tq.aspect_ratio);
-    dihedral.push_back(tq.min_dihedral_deg);
+    if (!tetrahedron_aspect_within(p[0], p[1], p[2], p[3], Sign::Positive, limit)) return false;  // NaN never passes
   }
   return true;
+}
+
+// The full quality of every tetrahedron of v's star with v at q, into
+// best_aspect_ and best_dihedral_ (star_ order).
+void Smoother::measure_star(int v, Vec3 q) {
+  best_aspect_.clear();
+  best_dihedral_.clear();
+  for (const int t : star_) {
+    const auto p = corners(mesh_, mesh_.tet(t), v, q);
+    const TetQuality tq = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+    best_aspect_.push_back(tq.aspect_ratio);
+    best_dihedral_.push_back(tq.min_dihedral_deg);
+  }
 }
 
 // Each boundary triangle of v (faces_, gathered by try_vertex) has the same
@@ -364,21 +372,20 @@ bool Smoother::try_vertex(int v) {
     for (std::size_t j = i; j > 0 && mesh_.dihedral(by_dihedral_[j]) < mesh_.dihedral(by_dihedral_[j - 1]); --j)
       std::swap(by_dihedral_[j], by_dihedral_[j - 1]);
   const double limit = std::min(old_worst, cap_);
-  Trial best{p, 0, old_min + kMinDihedralGain};
+  Trial best{p, old_min + kMinDihedralGain};
   bool found = false;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Vec3 q = candidates[i];
     if (!placed[i] || q == p) continue;
-    Trial trial{q, limit, 0};
-    if (!evaluate(v, q, best.min_dihedral, found, trial, aspect_, dihedral_)) continue;
+    Trial trial{q, 0};
+    if (!evaluate(v, q, best.min_dihedral, found, limit, trial)) continue;
     if (!(trial.min_dihedral >= best.min_dihedral) || (found && trial.min_dihedral == best.min_dihedral)) continue;
     if (!within_size(v, p, q)) continue;
     best = trial;
     found = true;
-    std::swap(aspect_, best_aspect_);
-    std::swap(dihedral_, best_dihedral_);
   }
   if (!found) return false;
+  measure_star(v, best.q);
   mesh_.move_vertex(v, best.q, star_, best_aspect_, best_dihedral_);
   return true;
 }

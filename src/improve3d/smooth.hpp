@@ -111,10 +111,10 @@ class Smoother {
   bool try_vertex(int v);
   struct Trial {
     Vec3 q;
-    double worst_aspect = 0, min_dihedral = 0;
+    double min_dihedral = 0;
   };
-  bool evaluate(int v, Vec3 q, double floor, bool strict, Trial& trial, std::vector<double>& aspect,
-                std::vector<double>& dihedral);
+  bool evaluate(int v, Vec3 q, double floor, bool strict, double limit, Trial& trial);
+  void measure_star(int v, Vec3 q);
   bool place(int v, Vec3 p, Vec3& q);
   bool fan_keeps_orientation(int v, Vec3 p, Vec3 q);
   bool within_size(int v, Vec3 p, Vec3 q) const;
@@ -135,7 +135,7 @@ class Smoother {
   std::vector<int> by_dihedral_;  // star_ by increasing minimum dihedral angle (evaluate's test order)
   std::vector<std::uint64_t> marks_;
   std::uint64_t stamp_ = 0;
-  std::vector<double> aspect_, dihedral_, best_aspect_, best_dihedral_;
+  std::vector<double> best_aspect_, best_dihedral_;  // measure_star's
 };
 
 }  // namespace pqmesh::improve3d::detail

@@ -14,6 +14,7 @@
 
 #include "predicates/predicates.hpp"
 #include "pqmesh/quality.hpp"
+#include "quality/tetrahedron_aspect_within.hpp"
 #include "quality/tetrahedron_min_dihedral.hpp"
 #include "quality/tetrahedron_shape.hpp"
 
@@ -409,29 +410,40 @@ struct TetCore {
 constexpr int kDihedralPair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr double kCosGap = 0x1p-20;
 
-struct DihedralKeys {
+struct FaceVectors {
   Vec3 u, v, w;
   std::array<Vec3, 4> n;
-  std::array<double, 4> nn;       // |n_k|
+  std::array<double, 4> n2, nn;  // |n_k|^2, |n_k|
+};
+
+struct DihedralKeys : FaceVectors {
   std::array<double, 6> xs, key;  // x_i and the key of angle i
   ExtremeCandidates<6> pick;
 };
 
-// `inline`: with the hint GCC inlines it into both callers; out of line, the
-// struct returned through memory costs tetrahedron_min_dihedral about 10% more
-// instructions.
-inline DihedralKeys dihedral_keys(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  DihedralKeys s;
+// `inline` (here and below): with the hint GCC inlines these into their
+// callers; out of line, the struct returned through memory costs
+// tetrahedron_min_dihedral about 10% more instructions.
+inline FaceVectors face_vectors(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  FaceVectors s;
   s.u = b - a;
   s.v = c - a;
   s.w = d - a;
   s.n = {cross(d - b, c - b), cross(s.v, s.w), cross(s.w, s.u), cross(s.u, s.v)};
+  for (int k = 0; k < 4; ++k) {
+    s.n2[k] = norm2(s.n[k]);
+    s.nn[k] = std::sqrt(s.n2[k]);  // == norm(n[k])
+  }
+  return s;
+}
+
+inline DihedralKeys dihedral_keys(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  DihedralKeys s;
+  static_cast<FaceVectors&>(s) = face_vectors(a, b, c, d);
   std::array<double, 4> inv{};
   std::array<bool, 4> in_range{};
   for (int k = 0; k < 4; ++k) {
-    const double n2 = norm2(s.n[k]);
-    s.nn[k] = std::sqrt(n2);  // == norm(n[k])
-    in_range[k] = n2 >= 0x1p-500 && n2 <= 0x1p500;
+    in_range[k] = s.n2[k] >= 0x1p-500 && s.n2[k] <= 0x1p500;
     inv[k] = 1.0 / s.nn[k];
   }
   for (int i = 0; i < 6; ++i) {
@@ -453,14 +465,37 @@ double dihedral_angle(const DihedralKeys& s, int i) {
   return std::numbers::pi - phi;
 }
 
+// The signed volume, the inradius r = 3 |V| / (half the sum of the face
+// areas) and the circumradius with its frame (`has_frame` when det != 0,
+// else circum = infinity) of a tetrahedron of the given nonzero or zero
+// orientation, from its face vectors: the doubles tetrahedron_quality reports
+// and divides by.
+struct TetRadii {
+  double volume, r, circum;
+  CircumFrame frame;
+  bool has_frame;
+};
+
+inline TetRadii tet_radii(const FaceVectors& s, Sign orientation) {
+  const std::array<Vec3, 4>& n = s.n;
+  const double det = dot(s.u, n[1]);
+  TetRadii t{with_sign(det / 6.0, orientation), 0.0, kInf, {n, s.u, {}, det}, det != 0.0};
+  const double faces = 0.5 * (s.nn[0] + s.nn[1] + s.nn[2] + s.nn[3]);
+  t.r = 3.0 * std::abs(t.volume) / faces;
+  if (t.has_frame) {  // the same doubles circum_frame(a, b, c, d) gives
+    t.frame.x = (0.5 / det) * (norm2(s.u) * n[1] + norm2(s.v) * n[2] + norm2(s.w) * n[3]);
+    t.circum = norm(t.frame.x);
+  }
+  return t;
+}
+
 TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   TetQuality q{};
   const Sign orientation = orient3d(a, b, c, d);
   const DihedralKeys s = dihedral_keys(a, b, c, d);
   const Vec3 &u = s.u, &v = s.v, &w = s.w;
-  const std::array<Vec3, 4>& n = s.n;
-  const double det = dot(u, n[1]);
-  q.volume = with_sign(det / 6.0, orientation);
+  const TetRadii radii = tet_radii(s, orientation);
+  q.volume = radii.volume;
   if (orientation == Sign::Zero) {
     q.min_dihedral_deg = 0.0;
     q.max_dihedral_deg = 180.0;
@@ -478,18 +513,10 @@ TetCore tet_core(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   q.min_dihedral_deg = min_dihedral * kDeg;
   q.max_dihedral_deg = max_dihedral * kDeg;
 
-  const double faces = 0.5 * (s.nn[0] + s.nn[1] + s.nn[2] + s.nn[3]);
-  const double r = 3.0 * std::abs(q.volume) / faces;
-  double circum = kInf;
-  CircumFrame frame{n, u, {}, det};  // the same doubles circum_frame(a, b, c, d) gives
-  if (det != 0.0) {
-    frame.x = (0.5 / det) * (norm2(u) * n[1] + norm2(v) * n[2] + norm2(w) * n[3]);
-    circum = norm(frame.x);
-  }
   const double shortest2 = std::min({norm2(u), norm2(v), norm2(w), norm2(c - b), norm2(d - b), norm2(d - c)});
-  q.sphere_ratio = circum / r;
-  q.radius_edge = circum / std::sqrt(shortest2);
-  return {q, false, r, circum, frame, det != 0.0};
+  q.sphere_ratio = radii.circum / radii.r;
+  q.radius_edge = radii.circum / std::sqrt(shortest2);
+  return {q, false, radii.r, radii.circum, radii.frame, radii.has_frame};
 }
 
 }  // namespace
@@ -514,6 +541,17 @@ double tetrahedron_min_dihedral(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign orientation
     min_dihedral = std::min(min_dihedral, dihedral_angle(s, i));
   }
   return min_dihedral * kDeg;
+}
+
+bool tetrahedron_aspect_within(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Sign orientation, double limit) {
+  if (orientation == Sign::Zero) return kInf <= limit;  // tetrahedron_quality's flat aspect ratio
+  const TetRadii radii = tet_radii(face_vectors(a, b, c, d), orientation);
+  // The enclosing radius tet_enclosing_radius computes is never above the
+  // circumradius it starts from (a min fold), so the aspect ratio is never
+  // above the sphere ratio circum / r (the same double tet_core reports).
+  if (radii.circum / radii.r <= limit) return true;
+  const double enclosing = tet_enclosing_radius({a, b, c, d}, radii.circum, radii.has_frame ? &radii.frame : nullptr);
+  return enclosing / radii.r <= limit;
 }
 
 TetQuality tetrahedron_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
