@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -94,6 +95,10 @@ SummaryQuality summary_quality(const TetMesh3& mesh, const std::vector<CellField
 // tessellated part costs less than meshing it (pipe.off: 247,488 cells, 11 s,
 // against 1,546,240 cells, 40 s at 1/4).
 constexpr double kLfsRefine3 = 0.5;
+
+// TetMeshStats::wider_table on the "boxes" line.
+constexpr std::array<const char*, 3> kWiderTable = {"no out-of-face table", "out-of-face table lost",
+                                                    "out-of-face table kept"};
 
 // The "size" line, printed when --lfs-integral asked for I3(P), the integral of
 // 1/lfs^3 over P (pqmesh/lfs3.hpp): up to a constant, a lower bound on the
@@ -191,7 +196,8 @@ void print_summary(const Domain3& domain, const Mesh3Run& run, const std::vector
             << " facet (inside " << s.facet_inside << ", on F " << s.facet_on << ", beyond " << s.facet_beyond << "), "
             << s.edge_jobs << " edge, " << s.vertex_jobs << " vertex, " << s.two_facet_jobs << " two-facet; "
             << s.touching_leaves << " touching leaves skipped; " << s.warped << " warped vertices (" << s.warp_rebuilds
-            << " warp rebuilds, " << s.worst_box_rounds << " worst-box rounds)\n"
+            << " warp rebuilds, " << s.worst_box_rounds << " worst-box rounds, " << s.box_runs << " box runs, "
+            << kWiderTable[static_cast<std::size_t>(s.wider_table)] << ")\n"
             << (s.warp_failure.empty() ? ""
                                        : "warning    warping failed, the mesh is unwarped: " + s.warp_failure + "\n")
             << "time (s)   octree " << fmt_seconds(s.seconds_octree) << ", classify " << fmt_seconds(s.seconds_classify)

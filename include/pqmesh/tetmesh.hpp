@@ -153,6 +153,13 @@ struct TetMeshStats {
   // while its worst tetrahedron strictly improves
   // (docs/algorithm/tet3d_warp.md "Freezing the worst box's warps").
   std::int64_t worst_box_rounds = 0;
+  // Box stages run: 1; 2 when the run with two-cone-point edge boxes was made
+  // and kept; 3 when it lost and the first run's mesh was remade
+  // (docs/algorithm/tet3d_warp.md "Two cone points").
+  std::int64_t box_runs = 1;
+  // The out-of-face table of the kept run (docs/algorithm/tet3d_warp.md "One
+  // decision per shared face"): 0 not tried, 1 tried and lost, 2 kept.
+  std::int64_t wider_table = 0;
   // Squares of united vertex boxes triangulated in one piece per plane group
   // (coplanar facets joined by flat edges; docs/algorithm/tet3d_boxes.md "The
   // square dispatcher").

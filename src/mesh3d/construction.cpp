@@ -106,6 +106,8 @@ tet3d::BoxMesh box_tetrahedra(const mv3d::OctreeBuilder& builder, const BoxPlan&
   s.warped = boxes.warped;
   s.warp_rebuilds = boxes.warp_rebuilds;
   s.worst_box_rounds = boxes.worst_box_rounds;
+  s.box_runs = boxes.box_runs;
+  s.wider_table = boxes.wider_table;
   s.split_squares = boxes.stats.squares_pieces;
   return boxes;
 }

@@ -81,6 +81,30 @@ struct PassNotes {
   std::shared_ptr<const WarpTable> table;
 };
 
+// Whether the mesh of `wider` inverts nothing and has a strictly smaller
+// worst tet_shape than the accepted trial, whose per-job worst shapes are
+// `shapes`, judged by a partial trial of `scope`: the jobs whose closed box
+// holds a point the two tables place differently. Every other job makes the
+// same tetrahedra on both tables (docs/algorithm/tet3d_warp.md "Partial
+// trials"), so its worst shape is the accepted one's. A win is confirmed by a
+// trial of every job (the caller's), a loss keeps the accepted trial. Cost:
+// one trial of the scope, beside the accepted mesh.
+bool partial_trial_scores_better(const BoxPass& pass, const WarpTable& wider, const std::vector<std::int32_t>& scope,
+                                 const std::vector<double>& shapes, PassNotes& notes) {
+  const auto trial = partial_trial(pass, wider, scope);
+  notes.wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
+  if (!trial->bad().empty()) return false;
+  double worst_before = 0.0, worst_after = trial->worst_shape();
+  std::size_t next = 0;  // scope is ascending
+  for (std::size_t j = 0; j < shapes.size(); ++j) {
+    worst_before = std::max(worst_before, shapes[j]);
+    const bool in_scope = next < scope.size() && static_cast<std::size_t>(scope[next]) == j;
+    if (in_scope) ++next;
+    else worst_after = std::max(worst_after, shapes[j]);
+  }
+  return worst_after < worst_before;
+}
+
 // The mesh of a finished assembler and the counts of its table.
 BoxMesh finish_pass(BoxAssembler& a, const WarpTable& warps) {
   a.count_squares();
@@ -120,7 +144,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   const EmptyCells empty_cells(tree, jobs);
   const BoxPass pass{tree, corners, domain, jobs, two_apex, hooks.facet_fans, &empty_cells};
   WarpTable warps;
-  std::int64_t rebuilds = 0, worst_box_rounds = 0;
+  std::int64_t rebuilds = 0, worst_box_rounds = 0, wider_table = 0;
   // The warped run's trial pass (collect mode) that inverted nothing: it made
   // exactly the tetrahedra the final pass would make (same table, same job
   // order; collect mode differs only where a tetrahedron inverts), so it is
@@ -240,34 +264,44 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // kept, the table without those moves on a tie. Runs without such a move
     // are unchanged. The other table is made in the rebuild loop while its
     // candidates live (`wider_ready`; from fresh candidates when the loop made
-    // none), and the finished trial is dropped before the other table's trial
-    // (a mesh is a large part of the peak memory); when that table loses, the
-    // final pass below remakes this mesh.
+    // none). A partial trial of the jobs it changes decides first, beside the
+    // finished trial (partial_trial_scores_better); only when it wins is the
+    // finished trial dropped (a mesh is a large part of the peak memory) and
+    // a trial of every job made on the other table, which must confirm the
+    // win; when it does not, the final pass below remakes this mesh.
     bool wider_won = false;
-    // When the wider table loses: the per-job worst shapes of the dropped
-    // trial, which is all the worst-box freeze reads of it.
+    // When the wider table's trial of every job loses: the per-job worst
+    // shapes of the dropped trial, which is all the worst-box freeze reads of it.
     std::vector<double> clean_shapes;
     if (done && warps.out_of_face_left > 0) {
-      clean_shapes = done->job_worst_shapes(jobs.size());
-      const double worst_before =
-          clean_shapes.empty() ? 0.0 : *std::max_element(clean_shapes.begin(), clean_shapes.end());
-      done.reset();
-      release_free_heap();
       WarpTable wider =
           wider_ready ? std::move(*wider_ready) : wider_of(warp_candidates(tree, corners, domain, jobs));
       wider_ready.reset();
       release_free_heap();
       if (wider.out_of_face > 0) {
-        std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
-        auto trial = full_trial(pass, warps);
-        notes.wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
-        if (trial->bad().empty() && trial->worst_shape() < worst_before) {
-          done = std::move(trial);
-          wider_won = true;
-          clean_shapes.clear();
-        } else {
-          trial.reset();
-          std::swap(warps, wider);
+        std::vector<double> shapes = done->job_worst_shapes(jobs.size());
+        const double worst_before = shapes.empty() ? 0.0 : *std::max_element(shapes.begin(), shapes.end());
+        const auto changed_jobs = [&] {
+          if (!job_boxes) job_boxes.emplace(tree, jobs);
+          return job_boxes->touching(changed_points(warps, wider), {});
+        };
+        wider_table = 1;
+        if (!hooks.partial_trials || partial_trial_scores_better(pass, wider, changed_jobs(), shapes, notes)) {
+          clean_shapes = std::move(shapes);
+          done.reset();
+          release_free_heap();
+          std::swap(warps, wider);  // the trial's assembler keeps a pointer to `warps`
+          auto trial = full_trial(pass, warps);
+          notes.wanted.insert(trial->two_apex_points().begin(), trial->two_apex_points().end());
+          if (trial->bad().empty() && trial->worst_shape() < worst_before) {
+            done = std::move(trial);
+            wider_won = true;
+            wider_table = 2;
+            clean_shapes.clear();
+          } else {
+            trial.reset();
+            std::swap(warps, wider);
+          }
         }
       }
     }
@@ -291,6 +325,7 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
   done.reset();
   out.warp_rebuilds = rebuilds;
   out.worst_box_rounds = worst_box_rounds;
+  out.wider_table = wider_table;
   if (options.warp) notes.table = std::make_shared<const WarpTable>(std::move(warps));
   if (options.keep_warp_table) out.warps = notes.table;
   return out;
@@ -312,6 +347,7 @@ BoxMesh remake_pass(const OctTree& tree, const CornerSet& corners, const Domain3
   BoxMesh out = finish_pass(*a, table ? *table : unwarped);
   out.warp_rebuilds = counts.warp_rebuilds;
   out.worst_box_rounds = counts.worst_box_rounds;
+  out.wider_table = counts.wider_table;
   if (options.keep_warp_table) out.warps = table;
   return out;
 }
@@ -379,6 +415,7 @@ BoxMesh mesh_boxes(const OctTree& tree, const CornerSet& corners, const Domain3&
   BoxMesh counts;  // the single run's loop counts, for the remake
   counts.warp_rebuilds = single.warp_rebuilds;
   counts.worst_box_rounds = single.worst_box_rounds;
+  counts.wider_table = single.wider_table;
   single = BoxMesh{};
   notes = PassNotes{};
   release_free_heap();

@@ -177,6 +177,9 @@ struct BoxMesh {
   // Box stages run: 1; 2 when the two-cone-point run was made and kept; 3 when
   // it lost and the first run's mesh was remade (mesh_boxes).
   std::int64_t box_runs = 1;
+  // The out-of-face table (docs/algorithm/tet3d_warp.md "One decision per
+  // shared face"): 0 not tried, 1 tried and lost, 2 kept.
+  std::int64_t wider_table = 0;
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
   std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
 };

@@ -988,7 +988,7 @@ void decide(WarpGeometry& geo, const FaceShifts& shifts, std::uint32_t i, const 
 
 bool same_warp(const Warp* a, const Warp* b) {
   if (a == nullptr || b == nullptr) return a == b;
-  return a->facet == b->facet && a->at.x == b->at.x && a->at.y == b->at.y && a->at.z == b->at.z;
+  return a->facet == b->facet && a->at == b->at;
 }
 
 // The face translations of the edge boxes, each at its fitted length.

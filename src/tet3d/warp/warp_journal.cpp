@@ -55,8 +55,7 @@ bool JournalCursor::same_copies(std::uint32_t point, const WarpJournal& out) {
   std::size_t k = first_new;
   for (; copy_ < j_.copies.size() && j_.copies[copy_].point == point; ++copy_, ++k) {
     const WarpJournal::Copy& a = j_.copies[copy_];
-    same = same && k < out.copies.size() && out.copies[k].facet == a.facet && out.copies[k].at.x == a.at.x &&
-           out.copies[k].at.y == a.at.y && out.copies[k].at.z == a.at.z;
+    same = same && k < out.copies.size() && out.copies[k].facet == a.facet && out.copies[k].at == a.at;
   }
   return same && k == out.copies.size();
 }

@@ -5,6 +5,9 @@
 // seed 45.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <utility>
+
 #include "pqmesh/check.hpp"
 #include "pqmesh/domain.hpp"
 #include "pqmesh/tetmesh.hpp"
@@ -34,6 +37,25 @@ TEST(RebuildLoop, TablesFromTheLastMakeTheMeshOfWholeTables) {
   EXPECT_GE(rewarped.warp_rebuilds, 2);
   test::expect_same_box_mesh(rewarped, whole);
   EXPECT_LE(test::valid_aspect_times_alpha(d, rewarped), test::kAspectAlphaC);
+}
+
+// The out-of-face table is judged by a partial trial of the jobs it changes
+// (facet_boxes.cpp partial_trial_scores_better); full trials judge it by a
+// trial of every job. Every-run seed 30: the table is kept; seed
+// 100: it loses. Either way the meshes are the same.
+TEST(RebuildLoop, PartialTrialsDecideTheOutOfFaceTableAsFullTrials) {
+  tet3d::detail::BoxMeshTestHooks full_trials;
+  full_trials.partial_trials = false;
+  for (const auto& [seed, outcome] : {std::pair<std::uint64_t, std::int64_t>{30, 2}, {100, 1}}) {
+    SCOPED_TRACE(seed);
+    const Domain3 d = make_domain(test::random_polyhedron(seed, test::every_run_polyhedron_options()));
+    const tet3d::BoxMesh partial = test::warped_box_run(d).mesh;
+    const tet3d::BoxMesh full = test::warped_box_run(d, test::warped_options(), full_trials).mesh;
+    EXPECT_EQ(partial.wider_table, outcome);
+    EXPECT_EQ(full.wider_table, outcome);
+    test::expect_same_box_mesh(partial, full);
+    EXPECT_LE(test::valid_aspect_times_alpha(d, partial), test::kAspectAlphaC);
+  }
 }
 
 // tet_mesh reports the rebuilds (the CLI summary prints them): every-run

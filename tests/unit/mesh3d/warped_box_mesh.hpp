@@ -99,6 +99,8 @@ inline void expect_same_box_mesh(const tet3d::BoxMesh& a, const tet3d::BoxMesh& 
   EXPECT_EQ(a.warp_inverting_left, b.warp_inverting_left);
   EXPECT_EQ(a.warp_rebuilds, b.warp_rebuilds);
   EXPECT_EQ(a.worst_box_rounds, b.worst_box_rounds);
+  EXPECT_EQ(a.box_runs, b.box_runs);
+  EXPECT_EQ(a.wider_table, b.wider_table);
   EXPECT_EQ(a.stats.edge_two_apex, b.stats.edge_two_apex);
 }
 
