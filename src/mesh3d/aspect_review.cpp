@@ -81,4 +81,17 @@ AspectReview review_aspect(const mv3d::OctreeBuilder& builder, const std::vector
   return out;
 }
 
+std::string review_stuck_corners(const tet3d::BoxMesh& stuck, double alpha) {
+  TetrahedronQualityMemo memo;
+  const auto& v = stuck.mesh.vertices;
+  double worst = 0;
+  for (const auto& tet : stuck.mesh.tetrahedra) {
+    const double a = memo(v[tet[0]], v[tet[1]], v[tet[2]], v[tet[3]]).aspect_ratio;
+    if (!(a <= worst)) worst = a;  // NaN counts as worst
+  }
+  if (worst * alpha <= kMeasuredAspectAlphaC) return {};
+  return "max aspect ratio " + std::to_string(worst) + " above C / alpha = " +
+         std::to_string(kMeasuredAspectAlphaC / alpha) + " at a box corner the warp cannot move (before the box stage)";
+}
+
 }  // namespace pqmesh::mesh3d

@@ -4,10 +4,12 @@
 // near its tetrahedra above the bound C / alpha, which the next construction
 // separates.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "mv3d/octree_builder.hpp"
 #include "pqmesh/mesh.hpp"
+#include "tet3d/facet_boxes.hpp"
 
 namespace pqmesh::mesh3d {
 
@@ -44,5 +46,14 @@ struct AspectReview {
 // held by a leaf above the bound.
 AspectReview review_aspect(const mv3d::OctreeBuilder& builder, const std::vector<std::int32_t>& tet_leaf,
                            const TetMesh3& mesh, double alpha);
+
+// The review of a lightest construction before its box stage
+// (docs/algorithm/mesh3d.md "Light construction first"): `stuck` holds the
+// tetrahedra at the first warp table's stuck corners
+// (tet3d/rebuild/stuck_corners.hpp). Empty when every one of them has
+// aspect * alpha <= kMeasuredAspectAlphaC (the test review_aspect's caller
+// applies to the whole mesh); else why the construction is dropped. Cost: one
+// aspect ratio per tetrahedron.
+std::string review_stuck_corners(const tet3d::BoxMesh& stuck, double alpha);
 
 }  // namespace pqmesh::mesh3d

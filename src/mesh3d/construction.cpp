@@ -86,10 +86,16 @@ void record_plan(const mv3d::OctreeBuilder& builder, const BoxPlan& plan, TetMes
 // construction (every decision exact on the prewarped grid); a failure of the
 // warped run is recorded in s.warp_failure and the unwarped mesh returned
 // instead, never a silent change of quality.
+// review_stuck_alpha > 0: the run stops after its first warp table when
+// review_stuck_corners (with that alpha) drops it (BoxMesh::stuck).
 tet3d::BoxMesh box_tetrahedra(const mv3d::OctreeBuilder& builder, const BoxPlan& plan, const TetMeshOptions& options,
-                              TetMeshStats& s) {
+                              double review_stuck_alpha, TetMeshStats& s) {
   tet3d::BoxMeshOptions bo;
   bo.warp = options.warp;
+  if (review_stuck_alpha > 0)
+    bo.stuck_review = [review_stuck_alpha](const tet3d::BoxMesh& m) {
+      return review_stuck_corners(m, review_stuck_alpha);
+    };
   const tet3d::CornerSet corners(builder);
   tet3d::BoxMesh boxes;
   try {
@@ -98,6 +104,7 @@ tet3d::BoxMesh box_tetrahedra(const mv3d::OctreeBuilder& builder, const BoxPlan&
     if (!bo.warp) throw;
     s.warp_failure = e.what();
     bo.warp = false;
+    bo.stuck_review = nullptr;
     boxes = tet3d::mesh_boxes(builder.tree(), corners, builder.domain(), plan.jobs, bo);
   }
   s.facet_inside = boxes.stats.inside;
@@ -115,7 +122,7 @@ tet3d::BoxMesh box_tetrahedra(const mv3d::OctreeBuilder& builder, const BoxPlan&
 }  // namespace
 
 Construction construct(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant,
-                       double alpha, Clock::time_point t0) {
+                       double alpha, Clock::time_point t0, bool review_stuck) {
   Construction c;
   TetMeshStats& s = c.result.stats;
   TetMeshProgress progress;
@@ -149,8 +156,12 @@ Construction construct(const Domain3& domain, const TetMeshOptions& options, con
   t = Clock::now();
   progress.jobs = static_cast<std::int64_t>(plan->jobs.size());
   report("tetrahedra");
-  tet3d::BoxMesh boxes = box_tetrahedra(builder, *plan, options, s);
+  tet3d::BoxMesh boxes = box_tetrahedra(builder, *plan, options, review_stuck ? alpha : 0.0, s);
   s.seconds_tetrahedra = since(t);
+  if (!boxes.stuck.empty()) {
+    c.stuck = std::move(boxes.stuck);
+    return c;
+  }
   progress.tetrahedra = static_cast<std::int64_t>(boxes.mesh.tetrahedra.size());
 
   t = Clock::now();

@@ -38,12 +38,18 @@ struct Construction {
   // (with add_edges_of_facets). On
   // the thesis's octree MeshNotSupported is thrown instead.
   std::string unsupported;
+  // Not empty when review_stuck_corners dropped the construction before its
+  // box stage (construct's review_stuck): why; result is then empty.
+  std::string stuck;
 };
 
 // alpha: the domain's (radians), for the review. t0: the start of tet_mesh,
-// for options.progress. Throws InvalidInput for a bad size field or
-// max_size, MeshNotSupported (above), InternalError when an invariant breaks.
+// for options.progress. review_stuck: with warping, the box stage stops
+// after its first warp table when review_stuck_corners drops the
+// construction (`stuck` says why; result is then empty). Throws InvalidInput
+// for a bad size field or max_size, MeshNotSupported (above), InternalError
+// when an invariant breaks.
 Construction construct(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant,
-                       double alpha, std::chrono::steady_clock::time_point t0);
+                       double alpha, std::chrono::steady_clock::time_point t0, bool review_stuck = false);
 
 }  // namespace pqmesh::mesh3d

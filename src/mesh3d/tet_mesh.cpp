@@ -50,6 +50,7 @@ struct Verdict {
 
 Verdict verdict(const Domain3& domain, const Construction& c, double alpha) {
   if (!c.unsupported.empty()) return {c.unsupported, true};
+  if (!c.stuck.empty()) return {c.stuck, false, true};
   const CheckReport check = check_mesh(c.result.mesh, domain);
   if (!check.valid()) return {"the checker: " + check.to_text().substr(0, check.to_text().find('\n')), false};
   if (c.review.max_aspect * alpha <= kMeasuredAspectAlphaC) return {};
@@ -67,10 +68,10 @@ struct Attempt {
 };
 
 Attempt attempt(const Domain3& domain, const TetMeshOptions& options, const OctreeVariant& variant, double alpha,
-                Clock::time_point t0) {
+                Clock::time_point t0, bool review_stuck) {
   Attempt a;
   try {
-    Construction c = construct(domain, options, variant, alpha, t0);
+    Construction c = construct(domain, options, variant, alpha, t0, review_stuck);
     a.verdict = verdict(domain, c, alpha);
     if (a.verdict.why.empty()) a.kept = std::move(c);
     else a.named = std::move(c.review.over_bound);
@@ -97,9 +98,9 @@ constexpr int kLocalRounds = 2;
 
 std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions& options, double alpha,
                                      Clock::time_point t0, std::string& rejected) {
-  const auto run = [&](const OctreeVariant& variant) {
+  const auto run = [&](const OctreeVariant& variant, bool review_stuck = false) {
     const double before = since(t0);
-    Attempt a = attempt(domain, options, variant, alpha, t0);
+    Attempt a = attempt(domain, options, variant, alpha, t0, review_stuck);
     if (a.kept) {
       a.kept->result.stats.light_rejected = rejected;
       a.kept->result.stats.seconds_light = before;
@@ -108,7 +109,7 @@ std::optional<Construction> adaptive(const Domain3& domain, const TetMeshOptions
     }
     return a;
   };
-  Attempt lightest = run(OctreeVariant{1, false, {}});
+  Attempt lightest = run(OctreeVariant{1, false, {}}, true);
   if (lightest.kept) return std::move(lightest.kept);
   if (lightest.verdict.regrid)
     if (Attempt shifted = run(OctreeVariant{1, false, {}, 1}); shifted.kept) return std::move(shifted.kept);

@@ -13,6 +13,7 @@
 #include "tet3d/boxes/box_assembler.hpp"
 #include "tet3d/rebuild/free_heap.hpp"
 #include "tet3d/rebuild/job_runs.hpp"
+#include "tet3d/rebuild/stuck_corners.hpp"
 #include "tet3d/boxes/tet_shape.hpp"
 #include "tet3d/rebuild/trial_scope.hpp"
 #include "tet3d/warp/warp.hpp"
@@ -157,8 +158,21 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // boxes decides again only what the newly held points can change
     // (warp.hpp rewarp_box_vertices; the same table).
     WarpJournal journal;
-    warps = warp_box_vertices(tree, corners, domain, warp_candidates(tree, corners, domain, jobs), first_warp,
-                              hooks.incremental_tables ? &journal : nullptr);
+    // The stuck review reads the first table's journal (stuck_points).
+    const bool review = options.stuck_review && !two_apex;
+    std::optional<WarpCandidates> candidates = warp_candidates(tree, corners, domain, jobs);
+    warps = warp_box_vertices(tree, corners, domain, *candidates, first_warp,
+                              hooks.incremental_tables || review ? &journal : nullptr);
+    if (review) {
+      const std::vector<GridPoint> stuck = stuck_points(*candidates, journal);
+      std::string why = options.stuck_review(stuck_corner_tetrahedra(pass, warps, stuck));
+      if (!why.empty()) {
+        BoxMesh out;
+        out.stuck = std::move(why);
+        return out;
+      }
+    }
+    candidates.reset();
     release_free_heap();
     // A warp may bend a box face past a cone apex near it (an apex on a P
     // edge or facet close to the box face; the thesis's first pass and
@@ -175,7 +189,6 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     std::vector<EdgeBoxBounds> edge_boxes;
     std::set<std::int32_t> shifted_jobs;
     std::optional<JobBoxes> job_boxes;  // made at the first rebuild
-    std::optional<WarpCandidates> candidates;
     std::vector<std::int32_t> scope;  // the partial trial's jobs
     // The wider table (out_of_face, below) of the current frozen set and
     // second passes.

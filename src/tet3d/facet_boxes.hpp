@@ -57,8 +57,10 @@
 //   always tile it, so no prism is needed;
 //   otherwise (reflex E, centre outside the kernel): InternalError (not done).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "pqmesh/domain.hpp"
@@ -107,6 +109,8 @@ struct FacetBoxStats {
   std::int64_t vertex_squares_by_neighbours = 0, vertex_squares_located = 0;
 };
 
+struct BoxMesh;
+
 struct BoxMeshOptions {
   // §4.3 warping (both passes) for the box vertices of every kind (warp.hpp;
   // rules and counts there).
@@ -114,6 +118,11 @@ struct BoxMeshOptions {
   // Hand the final warp table to BoxMesh::warps (measurements: Lemma 6's
   // clearances of box vertices outside P, which are no mesh vertices).
   bool keep_warp_table = false;
+  // With warp: called once, after the first warp table, with the tetrahedra
+  // at its stuck corners (rebuild/stuck_corners.hpp); a non-empty answer
+  // stops the run before the rebuild loop: mesh_boxes returns an empty mesh
+  // with BoxMesh::stuck set to it. Empty: not called.
+  std::function<std::string(const BoxMesh&)> stuck_review;
 };
 
 namespace detail {
@@ -182,6 +191,9 @@ struct BoxMesh {
   std::int64_t wider_table = 0;
   std::int64_t warp_shortened = 0;  // moved by a fraction of a refused second-pass move (warp.hpp; among `warped`)
   std::shared_ptr<const WarpTable> warps;  // the final table, with BoxMeshOptions::keep_warp_table
+  // BoxMeshOptions::stuck_review's answer when it stopped the run (the mesh
+  // is then empty); else empty.
+  std::string stuck;
 };
 
 // The squares of the job's box faces (face order (axis 0..2) x (lower,

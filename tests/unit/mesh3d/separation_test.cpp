@@ -112,6 +112,34 @@ TEST(AspectReview, NamesTheFacesNearTheTetrahedraAboveTheBound) {
             static_cast<std::int64_t>(d.edges.size() + d.plc.facets.size()));  // not every face
 }
 
+// The review of the lightest construction's stuck corners (mesh3d.md "Light
+// construction first"). On corpus models whose lightest mesh is kept it drops
+// nothing and changes no tetrahedron (schoenhardt's first warp table has
+// stuck corners: their tetrahedra are within the bound). With an alpha that
+// puts every tetrahedron above the bound (C / alpha = 1/2, below every aspect
+// ratio), schoenhardt's construction is dropped before its box stage, and
+// the reason says so.
+TEST(StuckCornerReview, KeepsTheLightestMeshOfCorpusModelsAndDropsAboveTheBound) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TetMeshOptions o;
+  o.improve = false;
+  const mesh3d::OctreeVariant lightest{1, false, {}};
+  for (const char* name : {"cube.poly", "l_block.poly", "schoenhardt.poly"}) {
+    const Domain3 d = corpus(name);
+    const double alpha = compute_alpha(d.plc).radians;
+    const mesh3d::Construction reviewed = mesh3d::construct(d, o, lightest, alpha, t0, true);
+    const mesh3d::Construction plain = mesh3d::construct(d, o, lightest, alpha, t0, false);
+    EXPECT_TRUE(reviewed.stuck.empty()) << name << ": " << reviewed.stuck;
+    EXPECT_EQ(reviewed.result.mesh.tetrahedra, plain.result.mesh.tetrahedra) << name;
+    EXPECT_EQ(reviewed.result.mesh.vertices.size(), plain.result.mesh.vertices.size()) << name;
+    expect_valid_and_bounded(name, d, reviewed.result);
+  }
+  const Domain3 d = corpus("schoenhardt.poly");
+  const mesh3d::Construction dropped = mesh3d::construct(d, o, lightest, 2 * kMeasuredAspectAlphaC, t0, true);
+  EXPECT_NE(dropped.stuck.find("box corner the warp cannot move"), std::string::npos) << dropped.stuck;
+  EXPECT_TRUE(dropped.result.mesh.tetrahedra.empty());
+}
+
 // The ladder's second rung: the lightest octree's rules on the generic
 // grid's second offset (mesh3d.md "Light construction first"). Its planes are
 // elsewhere on every axis. What it makes is either a mesh that is valid and
