@@ -158,7 +158,9 @@ BoxMesh mesh_boxes_pass(const OctTree& tree, const CornerSet& corners, const Dom
     // boxes decides again only what the newly held points can change
     // (warp.hpp rewarp_box_vertices; the same table).
     WarpJournal journal;
-    // The stuck review reads the first table's journal (stuck_points).
+    // BoxMeshOptions::stuck_review, on the first table's stuck corners (read
+    // from its journal, stuck_corners.hpp); not in the two-cone-point run,
+    // which follows a run the review let through.
     const bool review = options.stuck_review && !two_apex;
     std::optional<WarpCandidates> candidates = warp_candidates(tree, corners, domain, jobs);
     warps = warp_box_vertices(tree, corners, domain, *candidates, first_warp,
